@@ -1,0 +1,93 @@
+//! Typed errors for invalid input.
+
+use core::fmt;
+
+/// Which input an [`InputError`] is about.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum Quantity {
+    /// The closest direction `n`.
+    Direction,
+    /// The linear velocity `v` of the rotation centre.
+    LinearVelocity,
+    /// The angular velocity `w`.
+    AngularVelocity,
+    /// The rotation centre at the epoch.
+    Centre,
+    /// A time (an interval end).
+    Time,
+    /// The body point with this index in the vertex slice.
+    Vertex(usize),
+    /// A radius given directly (a bounding sphere).
+    Radius,
+}
+
+/// Why an input was rejected.
+///
+/// Every constructor that validates returns this; no function of the crate
+/// panics on bad floating-point input.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum InputError {
+    /// A component is NaN or infinite.
+    NonFinite(Quantity),
+    /// A component exceeds [`Float::MAX_INPUT`](crate::Float::MAX_INPUT)
+    /// (`2^507` for `f64`, `2^59` for `f32`), beyond which intermediates could
+    /// overflow.
+    TooLarge(Quantity),
+    /// A direction of length zero.
+    ZeroDirection,
+    /// A vertex set with no vertex.
+    EmptyVertexSet,
+    /// A negative radius.
+    NegativeRadius,
+    /// An interval whose end precedes its start.
+    ReversedInterval,
+    /// A sub-interval that is not inside the motion's interval.
+    NotASubInterval,
+}
+
+impl fmt::Display for Quantity {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Direction => f.write_str("direction"),
+            Self::LinearVelocity => f.write_str("linear velocity"),
+            Self::AngularVelocity => f.write_str("angular velocity"),
+            Self::Centre => f.write_str("rotation centre"),
+            Self::Time => f.write_str("time"),
+            Self::Vertex(i) => write!(f, "vertex {i}"),
+            Self::Radius => f.write_str("radius"),
+        }
+    }
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NonFinite(q) => write!(f, "{q} is not finite"),
+            Self::TooLarge(q) => write!(f, "{q} exceeds the largest supported magnitude"),
+            Self::ZeroDirection => f.write_str("direction has zero length"),
+            Self::EmptyVertexSet => f.write_str("vertex set is empty"),
+            Self::NegativeRadius => f.write_str("radius is negative"),
+            Self::ReversedInterval => f.write_str("interval end precedes its start"),
+            Self::NotASubInterval => {
+                f.write_str("sub-interval is not inside the motion's interval")
+            }
+        }
+    }
+}
+
+impl core::error::Error for InputError {}
+
+/// Checks that every component is finite and at most `MAX_INPUT` in magnitude.
+pub(crate) fn check_components<T: crate::Float>(c: [T; 3], q: Quantity) -> Result<(), InputError> {
+    for x in c {
+        if !x.is_finite() {
+            return Err(InputError::NonFinite(q));
+        }
+        if x.abs() > T::MAX_INPUT {
+            return Err(InputError::TooLarge(q));
+        }
+    }
+    Ok(())
+}

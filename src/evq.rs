@@ -1,0 +1,189 @@
+//! The EVQ bound: the seed's Eq. 1 by the corrected case split of Eq. 2.
+//!
+//! With `c = n x w`, the rotating direction `c(t) = R(t)^T c` lies in the
+//! rotation plane and turns by `-|w| t`. In the in-plane basis
+//! `e1 = c/|c|`, `e2 = w^ x e1`,
+//!
+//! ```text
+//! c(t) / |c| = cos(theta) e1 - sin(theta) e2,     theta = |w| t,
+//! ```
+//!
+//! and a body point contributes `c(t) . r_i = |c| (cos(theta) x_i - sin(theta) y_i)`
+//! where `(x_i, y_i) = (r_i . e1, r_i . e2)` are the coordinates of its
+//! rotation-plane projection `r_i^c = r_i - (r_i . w^) w^`. Over the arc
+//! `theta in [theta_a, theta_b]`, `max |c(t) . r_i^c|` is (`proofs/04-evq-case-split.md`):
+//!
+//! * `|c| |r_i^c|` when the arc meets the line through `r_i^c` (the sweep is at
+//!   least pi, or `c(t_a)` and `c(t_b)` lie on opposite sides of that line);
+//! * `max(|c(t_a) . r_i^c|, |c(t_b) . r_i^c|)` otherwise.
+//!
+//! The seed's printed Eq. 2 has these two cases swapped, drops the absolute
+//! value and has no case for sweeps of pi or more; see the proof.
+
+use crate::bound::Projection;
+use crate::nevq::nevq_speed_from;
+use crate::rounding::{assemble, evq_rotational_up};
+use crate::{DirectedBound, Direction, Float, RigidMotion, Vec3, VertexSet};
+
+/// The EVQ bound: `|v.n| + max_i max_{t in [t_a, t_b]} |c(t) . r_i^c|`,
+/// rounded up and never above [`nevq`](crate::nevq).
+///
+/// `O(N)` per query over the body's vertices (convex-hull vertices suffice).
+/// It bounds the directed speed at every time of the motion's interval, and
+/// the displacement as speed times length. Work a query does not need is
+/// skipped: no scan at all when `c = n x w` vanishes (no rotation, or `n`
+/// parallel to `w`); no trigonometry when the sweep is pi or more; and the
+/// scan stops as soon as one vertex reaches the NEVQ value.
+///
+/// For a rotation so slow or a `c` so short that its square is subnormal
+/// (below [`Float::TINY_LENGTH`]), the NEVQ value is returned: still sound.
+///
+/// ```
+/// use motion_bound::{evq, nevq, Direction, RigidMotion, VertexSet};
+/// // A rod along x spinning slowly about z, measured along y.
+/// let rod = [[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0]];
+/// let body = VertexSet::try_new(&rod).unwrap();
+/// let motion = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0, 0.0, 0.1]).unwrap();
+/// let tight = evq(&body, &motion, Direction::Y).speed;
+/// let loose = nevq(&body.summary(), &motion, Direction::Y).speed;
+/// // Along y the rod's ends move at 0.1 cos(theta) for theta in [0, 0.1]: the sup is 0.1
+/// // at t = 0; along x they move at 0.1 sin(theta) <= 0.1 sin(0.1).
+/// assert!(tight >= 0.1 && tight <= loose);
+/// let along_x = evq(&body, &motion, Direction::X).speed;
+/// assert!(along_x < 0.0101 && along_x >= 0.1 * 0.1f64.sin());
+/// ```
+#[must_use]
+pub fn evq<T: Float>(
+    body: &VertexSet<'_, T>,
+    motion: &RigidMotion<T>,
+    n: Direction<T>,
+) -> DirectedBound<T> {
+    DirectedBound::from_speed(evq_speed(body, motion, n), motion)
+}
+
+/// The EVQ speed bound alone (see [`evq`]).
+#[must_use]
+pub fn evq_speed<T: Float>(body: &VertexSet<'_, T>, motion: &RigidMotion<T>, n: Direction<T>) -> T {
+    let p = Projection::new(motion, n);
+    let r_hat = body.summary().max_radius();
+    let nevq = nevq_speed_from(&p, r_hat);
+    match extremal(body, motion, &p, r_hat * r_hat) {
+        None => nevq,
+        Some(Extremal { e_sq, theta_m }) => {
+            let rot = evq_rotational_up(p.c_norm, e_sq.sqrt(), theta_m, p.w_l1, r_hat);
+            assemble(p.linear_up(), rot).min_nan(nevq)
+        }
+    }
+}
+
+/// The EVQ speed in plain floating point, without any rounding margin:
+/// `fl(|v.n| + |c| E^)`. Not a sound bound; exposed only so that tests can
+/// show the margin is needed (`proofs/floating-point.md`, "Power").
+#[cfg(feature = "testkit")]
+#[must_use]
+pub fn evq_speed_unmargined<T: Float>(
+    body: &VertexSet<'_, T>,
+    motion: &RigidMotion<T>,
+    n: Direction<T>,
+) -> T {
+    let p = Projection::new(motion, n);
+    let r_hat = body.summary().max_radius();
+    let e = match extremal(body, motion, &p, T::INFINITY) {
+        None => r_hat,
+        Some(x) => x.e_sq.sqrt(),
+    };
+    p.a.abs() + p.c_norm * e
+}
+
+/// The computed extremal value `E^^2 = max_i max_arc (u(theta) . q_i)^2` and
+/// the largest `|theta|` at the interval's ends.
+struct Extremal<T> {
+    e_sq: T,
+    theta_m: T,
+}
+
+/// `None` when the EVQ term cannot beat NEVQ (or is not trusted): no rotation,
+/// a tiny `c`, or a vertex reaching `stop_sq`.
+#[inline]
+fn extremal<T: Float>(
+    body: &VertexSet<'_, T>,
+    motion: &RigidMotion<T>,
+    p: &Projection<T>,
+    stop_sq: T,
+) -> Option<Extremal<T>> {
+    let omega = motion.angular_speed();
+    if p.c_norm <= T::TINY_LENGTH || omega <= T::TINY_LENGTH {
+        return None;
+    }
+    let iv = motion.interval();
+    let theta_a = omega * iv.start();
+    let theta_b = omega * iv.end();
+    let theta_m = theta_a.abs().max_nan(theta_b.abs());
+    let axis = motion.axis();
+    let e_sq = if theta_b - theta_a >= T::PI {
+        full_turn_scan(body.vertices(), axis, stop_sq)?
+    } else {
+        let e1 = Vec3::new(p.c.x / p.c_norm, p.c.y / p.c_norm, p.c.z / p.c_norm);
+        let e2 = axis.cross(e1);
+        let ua = (theta_a.cos(), -theta_a.sin());
+        let ub = (theta_b.cos(), -theta_b.sin());
+        arc_scan(body.vertices(), e1, e2, ua, ub, stop_sq)?
+    };
+    Some(Extremal { e_sq, theta_m })
+}
+
+/// Sweep of pi or more: `c(t)` meets the line through every `r_i^c`, so each
+/// vertex contributes its squared distance from the axis, `|w^ x r_i|^2`.
+#[inline]
+fn full_turn_scan<T: Float>(vertices: &[[T; 3]], axis: Vec3<T>, stop_sq: T) -> Option<T> {
+    let mut best = T::ZERO;
+    for r in vertices {
+        let v2 = axis.cross(Vec3::from_array(*r)).length_squared();
+        if v2 > best {
+            best = v2;
+            if best >= stop_sq {
+                return None;
+            }
+        }
+    }
+    Some(best)
+}
+
+/// Sweep below pi: the per-vertex case split in plane coordinates.
+/// `u = (cos theta, -sin theta)` are the unit directions of `c(t_a)`, `c(t_b)`
+/// in the basis `(e1, e2)`; `f = u . q` and `g = u x q` for `q = (x, y)`.
+#[inline]
+fn arc_scan<T: Float>(
+    vertices: &[[T; 3]],
+    e1: Vec3<T>,
+    e2: Vec3<T>,
+    ua: (T, T),
+    ub: (T, T),
+    stop_sq: T,
+) -> Option<T> {
+    let mut best = T::ZERO;
+    for r in vertices {
+        let r = Vec3::from_array(*r);
+        let x = r.dot(e1);
+        let y = r.dot(e2);
+        let ga = ua.0 * y - ua.1 * x;
+        let gb = ub.0 * y - ub.1 * x;
+        let v2 = if ga * gb <= T::ZERO {
+            // c(t_a), c(t_b) on opposite sides of the line through q (or on it):
+            // the arc meets +-q, where |c(t) . q| = |c| |q|.
+            x * x + y * y
+        } else {
+            // Same side: |u . q| has no interior maximum on the arc.
+            let fa = ua.0 * x + ua.1 * y;
+            let fb = ub.0 * x + ub.1 * y;
+            (fa * fa).max_nan(fb * fb)
+        };
+        if v2 > best {
+            best = v2;
+            if best >= stop_sq {
+                return None;
+            }
+        }
+    }
+    Some(best)
+}

@@ -1,0 +1,58 @@
+//! The NEVQ bound: the seed's Eq. 3.
+
+use crate::bound::Projection;
+use crate::rounding::{assemble, nevq_rotational_up};
+use crate::{BodySummary, DirectedBound, Direction, Float, RigidMotion};
+
+/// The seed's Eq. 3, `mu = |v.n| + |n x w| max_i |r_i|`, rounded up.
+///
+/// `O(1)` per query from a [`BodySummary`] computed once. It bounds the
+/// directed speed at every time, whatever the interval, because
+/// `|(n x w) . R(t) r_i| <= |n x w| |r_i|` (`proofs/03-nevq.md`); the
+/// displacement bound is the speed bound times the interval's length.
+///
+/// Zero rotation or `n` parallel to `w` give `c = n x w = 0` and leave only the
+/// linear term (plus the rounding margin).
+///
+/// ```
+/// use motion_bound::{nevq, BodySummary, Direction, RigidMotion};
+/// let body = BodySummary::from_radius(2.0).unwrap();
+/// let motion = RigidMotion::try_from_arrays([0.0; 3], [3.0, 0.0, 0.0], [0.0, 0.0, 1.0]).unwrap();
+/// let b = nevq(&body, &motion, Direction::X);
+/// // |v.n| = 3, |n x w| = 1, R = 2: mu = 5 up to a few ulps.
+/// assert!(b.speed >= 5.0 && b.speed <= 5.0 * (1.0 + 1e-14));
+/// ```
+#[must_use]
+pub fn nevq<T: Float>(
+    body: &BodySummary<T>,
+    motion: &RigidMotion<T>,
+    n: Direction<T>,
+) -> DirectedBound<T> {
+    DirectedBound::from_speed(nevq_speed(body, motion, n), motion)
+}
+
+/// The NEVQ speed bound alone (see [`nevq`]).
+#[must_use]
+pub fn nevq_speed<T: Float>(body: &BodySummary<T>, motion: &RigidMotion<T>, n: Direction<T>) -> T {
+    let p = Projection::new(motion, n);
+    nevq_speed_from(&p, body.max_radius())
+}
+
+#[inline]
+pub(crate) fn nevq_speed_from<T: Float>(p: &Projection<T>, r_hat: T) -> T {
+    assemble(p.linear_up(), nevq_rotational_up(p.c_norm, p.w_l1, r_hat))
+}
+
+/// The NEVQ speed in plain floating point, without any rounding margin:
+/// `fl(|v.n| + |n x w| R^)`. Not a sound bound; exposed only so that tests can
+/// show the margin is needed (`proofs/floating-point.md`, "Power").
+#[cfg(feature = "testkit")]
+#[must_use]
+pub fn nevq_speed_unmargined<T: Float>(
+    body: &BodySummary<T>,
+    motion: &RigidMotion<T>,
+    n: Direction<T>,
+) -> T {
+    let p = Projection::new(motion, n);
+    p.a.abs() + p.c_norm * body.max_radius()
+}

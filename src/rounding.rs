@@ -1,0 +1,104 @@
+//! Certified rounding margins, each a formula in the unit roundoff `u`.
+//!
+//! The derivations are in `proofs/floating-point.md`; every constant here
+//! names its section there. Notation: `u` is [`Float::UNIT_ROUNDOFF`]
+//! (`2^-53` for `f64`, `2^-24` for `f32`), `eta` is [`Float::ETA`], and
+//! `gamma_k = k u / (1 - k u)` is Higham's constant for `k` chained roundings.
+
+use crate::Float;
+
+/// An upper bound of `gamma_k = k u / (1 - k u)`: `(k + 1) u`, valid whenever
+/// `k (k + 1) u <= 1` (so for every `k` used here in both precisions), and
+/// computed exactly (a small integer times a power of two).
+#[inline]
+#[must_use]
+pub(crate) fn gamma<T: Float>(k: u32) -> T {
+    T::from_u32(k + 1) * T::UNIT_ROUNDOFF
+}
+
+/// Section "Summary": the factor that rounds the computed largest radius up,
+/// `R^ = fl(sqrt(max fl(|r_i|^2))) (1 + gamma_5) + 2 sqrt(eta)`.
+#[inline]
+#[must_use]
+pub(crate) fn radius_up<T: Float>(max_sq: T) -> T {
+    max_sq.sqrt() * (T::ONE + gamma::<T>(5)) + T::TWO * T::SQRT_ETA_UP
+}
+
+/// Section "Linear term": `|v.n| <= |fl(v.n)| + gamma_4 * fl(sum |v_k n_k|)`.
+#[inline]
+#[must_use]
+pub(crate) fn linear_up<T: Float>(a: T, a_mag: T) -> T {
+    a.abs() + gamma::<T>(4) * a_mag
+}
+
+/// Section "NEVQ": `|n x w| R <= fl|n x w| R^ (1 + gamma_3) + 2 gamma_2 |w|_1 R^`
+/// plus the underflow term `2 sqrt(eta) R^ + 4 eta (1 + R^)`.
+#[inline]
+#[must_use]
+pub(crate) fn nevq_rotational_up<T: Float>(c_norm: T, w_l1: T, r_hat: T) -> T {
+    c_norm * r_hat * (T::ONE + gamma::<T>(3))
+        + T::TWO * gamma::<T>(2) * w_l1 * r_hat
+        + T::TWO * T::SQRT_ETA_UP * r_hat
+        + T::from_u32(4) * T::ETA * (T::ONE + r_hat)
+}
+
+/// Section "EVQ": with `E^` the computed extremal value and `theta_m` the
+/// largest `|angle|` at the interval ends,
+/// `|c| E <= fl|c| E^ (1 + gamma_8) + fl|c| R^ u (48 + 12 theta_m)
+///           + 24 u |w|_1 R^ + 2 sqrt(eta)(R^ + fl|c|) + 16 eta (1 + R^)(1 + fl|c|)`.
+#[inline]
+#[must_use]
+pub(crate) fn evq_rotational_up<T: Float>(c_norm: T, e_hat: T, theta_m: T, w_l1: T, r_hat: T) -> T {
+    let u = T::UNIT_ROUNDOFF;
+    c_norm * e_hat * (T::ONE + gamma::<T>(8))
+        + c_norm * r_hat * (u * (T::from_u32(48) + T::from_u32(12) * theta_m))
+        + T::from_u32(24) * u * w_l1 * r_hat
+        + T::TWO * T::SQRT_ETA_UP * (r_hat + c_norm)
+        + T::from_u32(16) * T::ETA * (T::ONE + r_hat) * (T::ONE + c_norm)
+}
+
+/// Section "Assembly": the final factor `1 + gamma_16` covers the direction's
+/// normalisation (`1/|n| <= 1 + gamma_5`) and the rounding of the evaluation
+/// of the non-negative margin expression (at most 10 operations). A NaN can
+/// only arise from an overflowed intermediate; it is returned as `+inf`, the
+/// sound answer.
+#[inline]
+#[must_use]
+pub(crate) fn assemble<T: Float>(linear: T, rotational: T) -> T {
+    let mu = (linear + rotational) * (T::ONE + gamma::<T>(16));
+    if mu.is_nan() {
+        T::INFINITY
+    } else {
+        mu
+    }
+}
+
+/// Section "Displacement": `integral <= sup * (t_b - t_a)` rounded up,
+/// `fl(fl(s * fl(t_b - t_a)) (1 + gamma_3)) + eta`.
+#[inline]
+#[must_use]
+pub(crate) fn displacement_up<T: Float>(speed: T, length: T) -> T {
+    if length == T::ZERO {
+        return T::ZERO;
+    }
+    let d = speed * length * (T::ONE + gamma::<T>(3)) + T::ETA;
+    if d.is_nan() {
+        T::INFINITY
+    } else {
+        d
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::gamma;
+
+    #[test]
+    fn gamma_bound_dominates_the_exact_constant() {
+        for k in 1..=64u32 {
+            let u = 2f64.powi(-24);
+            let exact = f64::from(k) * u / (1.0 - f64::from(k) * u);
+            assert!(f64::from(gamma::<f32>(k)) >= exact, "k = {k}");
+        }
+    }
+}
