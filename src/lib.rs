@@ -136,3 +136,8 @@ pub use nevq::{nevq, nevq_speed};
 pub use point::{BodyPoint, Point3};
 pub use rotation::{rotate_about_axis, RotationPlane};
 pub use vec3::Vec3;
+
+/// The README's examples, compiled and run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;

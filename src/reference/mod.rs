@@ -19,8 +19,11 @@
 //! (exact widening of `f32` inputs) or, for `f64` inputs, a higher precision.
 //! Nothing here calls the bound code.
 
+pub mod dd;
 #[cfg(feature = "faer")]
 pub mod sampled;
+
+pub use dd::DoubleDouble;
 
 use crate::{Direction, Float, RigidMotion};
 
@@ -228,17 +231,19 @@ impl<R: Real> SpeedProfile<R> {
     /// `integral_{ta}^{tb} |s(t)| dt`, exactly (up to the precision of `R`).
     pub fn integral_abs(&self, ta: R, tb: R) -> R {
         let zero = R::from_f64(0.0);
-        if !(self.omega > zero) {
+        if self.omega <= zero {
             return self.speed_at(ta).abs().mul(tb.sub(ta));
         }
         let b = self.p.mul(self.p).add(self.q.mul(self.q)).sqrt();
-        if !(b > zero) {
+        if b <= zero {
             return self.a.abs().mul(tb.sub(ta));
         }
         let phi = self.q.atan2(self.p);
         let alpha = self.omega.mul(ta).sub(phi);
-        let beta = self.omega.mul(tb).sub(phi);
-        integral_abs_cos(self.a, b, alpha, beta).div(self.omega)
+        // The span is taken from `tb - ta` directly, not as a difference of
+        // two large angles, so tiny sweeps keep their relative accuracy.
+        let span = self.omega.mul(tb.sub(ta));
+        integral_abs_cos(self.a, b, alpha, span).div(self.omega)
     }
 }
 
@@ -254,43 +259,53 @@ fn arc_contains<R: Real>(tha: R, thb: R, x: R) -> bool {
     y <= thb
 }
 
-/// `integral_alpha^beta |a + b cos(psi)| dpsi` for `b > 0`, `alpha <= beta`.
-fn integral_abs_cos<R: Real>(a: R, b: R, alpha: R, beta: R) -> R {
+/// `integral_alpha^{alpha + span} |a + b cos(psi)| dpsi` for `b > 0`, `span >= 0`.
+fn integral_abs_cos<R: Real>(a: R, b: R, alpha: R, span: R) -> R {
     let two_pi = R::pi().add(R::pi());
-    let span = beta.sub(alpha);
     let full = span.div(two_pi).floor();
     let zero = R::from_f64(0.0);
     let mut total = zero;
     if full > zero {
         total = full.mul(integral_piece(a, b, zero, two_pi));
     }
-    let start = alpha.add(full.mul(two_pi));
-    if beta > start {
-        total = total.add(integral_piece(a, b, start, beta));
+    let rest = span.sub(full.mul(two_pi));
+    if rest > zero {
+        total = total.add(integral_piece(a, b, alpha, rest));
     }
     total
 }
 
-/// The same over at most one period, split at the zero crossings.
-fn integral_piece<R: Real>(a: R, b: R, alpha: R, beta: R) -> R {
+/// `integral_alpha^{alpha + span} |a + b cos(psi)| dpsi` over at most one
+/// period, split at the zero crossings. Each piece `[z0, z0 + h]` is
+/// `|a h + 2 b cos(z0 + h/2) sin(h/2)|`: the identity
+/// `sin z1 - sin z0 = 2 cos((z0 + z1)/2) sin((z1 - z0)/2)` avoids the
+/// cancellation of `sin z1 - sin z0` for short pieces.
+fn integral_piece<R: Real>(a: R, b: R, alpha: R, span: R) -> R {
     let two_pi = R::pi().add(R::pi());
-    let mut cuts = [alpha; 8];
+    let zero = R::from_f64(0.0);
+    let half = R::from_f64(0.5);
+    // cut points as offsets from alpha, in [0, span]
+    let mut cuts = [zero; 8];
     let mut m = 1;
-    let ratio = R::from_f64(0.0).sub(a).div(b);
+    let ratio = zero.sub(a).div(b);
     if ratio > R::from_f64(-1.0) && ratio < R::from_f64(1.0) {
         let psi0 = ratio.acos();
         let base = alpha.div(two_pi).floor().mul(two_pi);
-        for j in 0..3 {
+        // alpha is in [base, base + 2 pi) and the piece ends before
+        // alpha + 2 pi < base + 4 pi: zeros come from base, base + 2 pi and
+        // base + 4 pi (and, for rounding at the ends, base - 2 pi).
+        for j in 0..4 {
             let shift = base.add(two_pi.mul(R::from_f64(f64::from(j) - 1.0)));
             for z in [shift.add(psi0), shift.sub(psi0)] {
-                if z > alpha && z < beta && m < 7 {
-                    cuts[m] = z;
+                let off = z.sub(alpha);
+                if off > zero && off < span && m < 7 {
+                    cuts[m] = off;
                     m += 1;
                 }
             }
         }
     }
-    cuts[m] = beta;
+    cuts[m] = span;
     m += 1;
     // insertion sort of the few cut points
     for i in 1..m {
@@ -300,10 +315,16 @@ fn integral_piece<R: Real>(a: R, b: R, alpha: R, beta: R) -> R {
             j -= 1;
         }
     }
-    let mut total = R::from_f64(0.0);
+    let mut total = zero;
     for j in 0..m - 1 {
-        let (z0, z1) = (cuts[j], cuts[j + 1]);
-        let piece = a.mul(z1.sub(z0)).add(b.mul(z1.sin().sub(z0.sin())));
+        let h = cuts[j + 1].sub(cuts[j]);
+        let mid = alpha.add(cuts[j]).add(h.mul(half));
+        let piece = a.mul(h).add(
+            R::from_f64(2.0)
+                .mul(b)
+                .mul(mid.cos())
+                .mul(h.mul(half).sin()),
+        );
         total = total.add(piece.abs());
     }
     total

@@ -1,0 +1,68 @@
+//! EVQ soundness and tightness order: for a fuzzed hard case in `f32` or
+//! `f64`, the EVQ speed and displacement are not NaN, are at least the
+//! high-precision exact values, and are at most NEVQ's; the same again on a
+//! sub-interval picked by two fractions of the input (`RigidMotion::restrict`,
+//! what a conservative-advancement step does), where NEVQ is checked too.
+
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use motion_bound::testkit::{Case, CaseSpec};
+use motion_bound::{evq, nevq, Float, VertexSet};
+use motion_bound_fuzz::{build_case, check_evq_le_nevq, check_sound, clamp, exact_hp, Precision};
+
+fn check<T: Precision>(what: &str, case: &Case<T>) {
+    let body = VertexSet::try_new(&case.vertices)
+        .unwrap_or_else(|e| panic!("({}) built case rejected: {e:?}; case {case:?}", T::NAME));
+    let e = evq(&body, &case.motion, case.n);
+    let n = nevq(&body.summary(), &case.motion, case.n);
+    let ex = exact_hp(case);
+    check_sound(what, &ex, e, case);
+    check_evq_le_nevq(e, n, case);
+    if what != "evq" {
+        check_sound("nevq on the sub-interval", &ex, n, case);
+    }
+}
+
+fn run<T: Precision>(spec: &CaseSpec, fa: u16, fb: u16) {
+    let Some(case) = build_case::<T>(spec) else {
+        return;
+    };
+    check("evq", &case);
+
+    // A sub-interval [ta, tb] of the case's interval.
+    let iv = case.motion.interval();
+    let (s, e) = (iv.start(), iv.end());
+    let at = |f: u16| clamp(s + (e - s) * T::from_f64(f64::from(f) / 65535.0), s, e);
+    let (mut ta, mut tb) = (at(fa), at(fb));
+    if tb < ta {
+        core::mem::swap(&mut ta, &mut tb);
+    }
+    let motion = case.motion.restrict(ta, tb).unwrap_or_else(|err| {
+        panic!(
+            "({}) restrict({ta:?}, {tb:?}) of {iv:?} failed: {err:?}; case {case:?}",
+            T::NAME
+        )
+    });
+    assert!(
+        motion.interval().start() == ta && motion.interval().end() == tb,
+        "({}) restrict({ta:?}, {tb:?}) gave {:?}",
+        T::NAME,
+        motion.interval()
+    );
+    let sub = Case {
+        vertices: case.vertices.clone(),
+        motion,
+        n: case.n,
+    };
+    check("evq on the sub-interval", &sub);
+}
+
+fuzz_target!(|input: (CaseSpec, bool, u16, u16)| {
+    let (spec, double, fa, fb) = input;
+    if double {
+        run::<f64>(&spec, fa, fb);
+    } else {
+        run::<f32>(&spec, fa, fb);
+    }
+});

@@ -1,0 +1,388 @@
+//! Shared input types and oracle checks for the `motion-bound` fuzz targets.
+//!
+//! Every target decodes its input with `arbitrary` into typed values and
+//! turns a violated property into a panic (`assert!` with the offending
+//! values in the message), which libFuzzer reports as a crash.
+//!
+//! * [`Precision`] pairs a bound precision with the oracle precision it is
+//!   checked against: `f64` for `f32` bounds, [`DoubleDouble`] for `f64`
+//!   bounds (the same pairing as `tests/common`).
+//! * [`Num`] is a raw float with a bias: any bit pattern, a moderate value,
+//!   or one of the boundary values of the crate's range analysis.
+//! * [`check_sound`] is the soundness oracle shared by the bound targets.
+
+#![forbid(unsafe_code)]
+
+use std::fmt::Debug;
+
+use arbitrary::Arbitrary;
+use motion_bound::reference::{exact, DoubleDouble, Exact, Real};
+use motion_bound::testkit::{Case, CaseSpec};
+use motion_bound::{DirectedBound, Float, InputError, Quantity};
+
+pub mod seeds;
+
+/// Vertices of a [`CaseSpec`] beyond this many are dropped before the case is
+/// built: the high-precision oracle costs microseconds per vertex, and a
+/// longer list only repeats the per-vertex cases (the bounds take a maximum
+/// over vertices). The `validation` target feeds longer lists to the bounds.
+pub const MAX_CASE_VERTICES: usize = 32;
+
+/// A bound precision with its oracle precision and the boundary values of the
+/// crate's range analysis.
+pub trait Precision: Float + for<'a> Arbitrary<'a> {
+    /// The arithmetic the oracle runs in for bounds of this precision.
+    type R: Real;
+    /// `"f32"` or `"f64"`.
+    const NAME: &'static str;
+    /// The largest finite value.
+    const MAX: Self;
+    /// The smallest positive normal value.
+    const MIN_POSITIVE: Self;
+    /// A quiet NaN.
+    const NAN: Self;
+    /// Relative precision of [`Self::R`] (a safe upper bound of its unit roundoff).
+    const R_EPS: f64;
+    /// The next representable value towards `+inf`.
+    fn next_up(self) -> Self;
+    /// The next representable value towards `-inf`.
+    fn next_down(self) -> Self;
+}
+
+impl Precision for f32 {
+    type R = f64;
+    const NAME: &'static str = "f32";
+    const MAX: Self = f32::MAX;
+    const MIN_POSITIVE: Self = f32::MIN_POSITIVE;
+    const NAN: Self = f32::NAN;
+    const R_EPS: f64 = f64::EPSILON;
+    fn next_up(self) -> Self {
+        f32::next_up(self)
+    }
+    fn next_down(self) -> Self {
+        f32::next_down(self)
+    }
+}
+
+impl Precision for f64 {
+    type R = DoubleDouble;
+    const NAME: &'static str = "f64";
+    const MAX: Self = f64::MAX;
+    const MIN_POSITIVE: Self = f64::MIN_POSITIVE;
+    const NAN: Self = f64::NAN;
+    const R_EPS: f64 = 1.0 / (1u128 << 100) as f64;
+    fn next_up(self) -> Self {
+        f64::next_up(self)
+    }
+    fn next_down(self) -> Self {
+        f64::next_down(self)
+    }
+}
+
+/// Exact widening of a bound-precision value to the oracle precision.
+#[must_use]
+pub fn wide<T: Precision>(x: T) -> T::R {
+    T::R::from_f64(x.to_f64())
+}
+
+/// The number of boundary values [`Num::Special`] picks from.
+pub const SPECIALS: u8 = 28;
+
+/// A raw float of precision `T`, biased towards the interesting values.
+#[derive(Arbitrary, Clone, Copy, Debug)]
+pub enum Num<T> {
+    /// Any bit pattern: NaN, infinities, subnormals, huge values.
+    Raw(T),
+    /// `mant / 2^31 * 2^exp` with `exp` clamped to `[-60, 60]`.
+    Moderate {
+        /// Signed mantissa.
+        mant: i32,
+        /// Binary exponent.
+        exp: i8,
+    },
+    /// A boundary value of the range analysis (see [`special`]).
+    Special(u8),
+}
+
+impl<T: Precision> Num<T> {
+    /// The value.
+    #[must_use]
+    pub fn get(self) -> T {
+        match self {
+            Self::Raw(x) => x,
+            Self::Moderate { mant, exp } => {
+                let e = i32::from(exp).clamp(-60, 60);
+                T::from_f64(f64::from(mant) / 2147483648.0 * 2f64.powi(e))
+            }
+            Self::Special(i) => special(i),
+        }
+    }
+}
+
+/// Boundary value number `i % SPECIALS`: zeros, ones, pi and 2 pi, the
+/// largest accepted input and the next value above it, `TINY_LENGTH` and the
+/// value below it, `sqrt(eta)`, `eta`, the smallest normal, the largest
+/// finite value, infinities, NaN, the unit roundoff, and the neighbours of 1.
+#[must_use]
+pub fn special<T: Precision>(i: u8) -> T {
+    match i % SPECIALS {
+        0 => T::ZERO,
+        1 => -T::ZERO,
+        2 => T::ONE,
+        3 => -T::ONE,
+        4 => T::HALF,
+        5 => T::PI,
+        6 => T::PI * T::TWO,
+        7 => T::MAX_INPUT,
+        8 => -T::MAX_INPUT,
+        9 => T::MAX_INPUT.next_up(),
+        10 => T::TINY_LENGTH,
+        11 => T::TINY_LENGTH.next_down(),
+        12 => T::SQRT_ETA_UP,
+        13 => T::ETA,
+        14 => -T::ETA,
+        15 => T::MIN_POSITIVE,
+        16 => T::MAX,
+        17 => -T::MAX,
+        18 => T::INFINITY,
+        19 => -T::INFINITY,
+        20 => T::NAN,
+        21 => T::UNIT_ROUNDOFF,
+        22 => T::ONE.next_up(),
+        23 => T::ONE.next_down(),
+        24 => T::from_f64(1e-3),
+        25 => T::PI.next_up(),
+        26 => T::PI.next_down(),
+        _ => T::from_f64(1e3),
+    }
+}
+
+/// The values of an array of [`Num`]s.
+#[must_use]
+pub fn nums<T: Precision, const N: usize>(a: [Num<T>; N]) -> [T; N] {
+    a.map(Num::get)
+}
+
+/// `true` for a value the crate's constructors accept: finite and at most
+/// [`Float::MAX_INPUT`] in magnitude.
+#[must_use]
+pub fn in_range<T: Float>(x: T) -> bool {
+    x.is_finite() && x.abs() <= T::MAX_INPUT
+}
+
+/// Checks a constructor's result against the documented validation rule for
+/// groups of components checked in order: `Ok` iff every component is in
+/// range; otherwise the error names the first group with a bad component, as
+/// [`InputError::NonFinite`] (only if that group has a NaN or infinite
+/// component) or [`InputError::TooLarge`] (only if it has a finite component
+/// above `MAX_INPUT`).
+///
+/// Returns `true` if every component is in range.
+pub fn check_components_result<T: Float, X: Debug>(
+    what: &str,
+    res: &Result<X, InputError>,
+    groups: &[(&[T], Quantity)],
+) -> bool {
+    let bad = groups
+        .iter()
+        .find(|(c, _)| c.iter().any(|&x| !in_range(x)));
+    match bad {
+        None => true,
+        Some((c, q)) => {
+            let non_finite = c.iter().any(|x| !x.is_finite());
+            let too_large = c.iter().any(|&x| x.is_finite() && x.abs() > T::MAX_INPUT);
+            let ok = match res {
+                Err(InputError::NonFinite(e)) => e == q && non_finite,
+                Err(InputError::TooLarge(e)) => e == q && too_large,
+                _ => false,
+            };
+            assert!(
+                ok,
+                "{what}: expected NonFinite/TooLarge({q:?}) for components {c:?}, got {res:?}; inputs {groups:?}"
+            );
+            false
+        }
+    }
+}
+
+/// The Euclidean length of `a`, in `R`, without overflow or underflow of the
+/// squares (scaled by the largest component, which is exact to widen).
+#[must_use]
+pub fn norm<T: Precision>(a: [T; 3]) -> T::R {
+    let zero = T::R::from_f64(0.0);
+    let s = a.iter().fold(0.0f64, |m, x| m.max(x.to_f64().abs()));
+    if s == 0.0 {
+        return zero;
+    }
+    let s = T::R::from_f64(s);
+    let mut sum = zero;
+    for x in a {
+        let y = wide(x).div(s);
+        sum = sum.add(y.mul(y));
+    }
+    s.mul(sum.sqrt())
+}
+
+/// The high-precision exact directed speed and displacement of a case.
+#[must_use]
+pub fn exact_hp<T: Precision>(case: &Case<T>) -> Exact<T::R> {
+    exact::<T, T::R>(&case.vertices, &case.motion, case.n)
+}
+
+/// The soundness oracle: the bound is not NaN, and its speed and
+/// displacement are at least the high-precision exact supremum of the
+/// directed speed and the exact directed displacement. Compared as `f64`
+/// values, strictly (the oracle is exact for `f32` inputs up to `f64`
+/// rounding, and to about 2^-104 relative for `f64` inputs; see
+/// `proofs/floating-point.md`).
+pub fn check_sound<T: Precision>(
+    what: &str,
+    ex: &Exact<T::R>,
+    bound: DirectedBound<T>,
+    context: &dyn Debug,
+) {
+    let (s, d) = (bound.speed.to_f64(), bound.displacement.to_f64());
+    let (es, ed) = (ex.sup_speed.to_f64(), ex.displacement.to_f64());
+    assert!(
+        !es.is_nan() && !ed.is_nan(),
+        "{what} ({}): oracle is NaN: {ex:?}; case {context:?}",
+        T::NAME
+    );
+    assert!(
+        !s.is_nan() && !d.is_nan(),
+        "{what} ({}): NaN bound {bound:?}; case {context:?}",
+        T::NAME
+    );
+    assert!(
+        s >= 0.0 && d >= 0.0,
+        "{what} ({}): negative bound {bound:?}; case {context:?}",
+        T::NAME
+    );
+    assert!(
+        s >= es,
+        "{what} ({}): speed bound {s:e} ({s:?}) below the exact sup {es:e} ({es:?}), ratio {:e}; oracle {ex:?}; case {context:?}",
+        T::NAME,
+        s / es
+    );
+    assert!(
+        d >= ed,
+        "{what} ({}): displacement bound {d:e} ({d:?}) below the exact integral {ed:e} ({ed:?}), ratio {:e}; oracle {ex:?}; case {context:?}",
+        T::NAME,
+        d / ed
+    );
+}
+
+/// EVQ never looser than NEVQ, in speed and in displacement.
+pub fn check_evq_le_nevq<T: Precision>(
+    evq: DirectedBound<T>,
+    nevq: DirectedBound<T>,
+    context: &dyn Debug,
+) {
+    assert!(
+        evq.speed <= nevq.speed,
+        "({}) evq speed {:?} above nevq speed {:?}; case {context:?}",
+        T::NAME,
+        evq.speed,
+        nevq.speed
+    );
+    assert!(
+        evq.displacement <= nevq.displacement,
+        "({}) evq displacement {:?} above nevq displacement {:?}; case {context:?}",
+        T::NAME,
+        evq.displacement,
+        nevq.displacement
+    );
+}
+
+/// Builds a fuzzed case description, with the vertex list capped at
+/// [`MAX_CASE_VERTICES`]. `None` when the description yields no valid input.
+#[must_use]
+pub fn build_case<T: Precision>(spec: &CaseSpec) -> Option<Case<T>> {
+    if spec.vertices.len() > MAX_CASE_VERTICES {
+        let mut capped = spec.clone();
+        capped.vertices.truncate(MAX_CASE_VERTICES);
+        capped.build::<T>()
+    } else {
+        spec.build::<T>()
+    }
+}
+
+/// `x` clamped to `[lo, hi]` (for `lo <= hi`).
+#[must_use]
+pub fn clamp<T: Float>(x: T, lo: T, hi: T) -> T {
+    if x < lo {
+        lo
+    } else if x > hi {
+        hi
+    } else {
+        x
+    }
+}
+
+/// The typed inputs of the `motion` and `validation` targets.
+pub mod inputs {
+    use super::Num;
+    use arbitrary::Arbitrary;
+
+    /// Raw motion-evaluation input in precision `T`.
+    #[derive(Arbitrary, Clone, Debug)]
+    pub struct MotionInput<T> {
+        /// Rotation centre at the epoch.
+        pub centre: [Num<T>; 3],
+        /// Linear velocity `v`.
+        pub linear: [Num<T>; 3],
+        /// Angular velocity `w`.
+        pub angular: [Num<T>; 3],
+        /// The motion's interval `[start, end]` (the unit interval if invalid).
+        pub interval: [Num<T>; 2],
+        /// A body point (not validated by the crate: any value).
+        pub point: [Num<T>; 3],
+        /// Two evaluation times (not validated by the crate: any value).
+        pub times: [Num<T>; 2],
+        /// A candidate sub-interval for `restrict`.
+        pub sub: [Num<T>; 2],
+        /// A raw direction (`Direction::Z` if invalid).
+        pub n: [Num<T>; 3],
+    }
+
+    /// The `motion` target's input.
+    #[derive(Arbitrary, Clone, Debug)]
+    pub enum MotionCase {
+        /// In `f32`.
+        Single(MotionInput<f32>),
+        /// In `f64`.
+        Double(MotionInput<f64>),
+    }
+
+    /// Fully raw input of every constructor, in precision `T`.
+    #[derive(Arbitrary, Clone, Debug)]
+    pub struct RawInput<T> {
+        /// Vertices for `VertexSet::try_new` (possibly empty).
+        pub vertices: Vec<[Num<T>; 3]>,
+        /// Radius for `BodySummary::from_radius`.
+        pub radius: Num<T>,
+        /// Direction for `Direction::try_new`.
+        pub n: [Num<T>; 3],
+        /// Interval for `TimeInterval::try_new`.
+        pub interval: [Num<T>; 2],
+        /// Centre, `v`, `w` for `RigidMotion::try_new`.
+        pub centre: [Num<T>; 3],
+        /// Linear velocity.
+        pub linear: [Num<T>; 3],
+        /// Angular velocity.
+        pub angular: [Num<T>; 3],
+        /// A candidate sub-interval for `RigidMotion::restrict`.
+        pub sub: [Num<T>; 2],
+        /// A gap for `DirectedBound::time_to_close`.
+        pub gap: Num<T>,
+    }
+
+    /// The `validation` target's input.
+    #[derive(Arbitrary, Clone, Debug)]
+    pub enum ValidationCase {
+        /// In `f32`.
+        Single(RawInput<f32>),
+        /// In `f64`.
+        Double(RawInput<f64>),
+    }
+}
