@@ -21,7 +21,7 @@
 //! bound: `proofs/04-evq-case-split.md` says where and why), is an upper bound
 //! for its floating-point inputs with rounding accounted for
 //! (`proofs/floating-point.md`), and is checked by property tests against an
-//! exact closed-form [`reference`].
+//! exact closed-form [`reference`](mod@reference).
 //!
 //! ```
 //! use motion_bound::{evq, nevq, Direction, RigidMotion, Vec3, VertexSet};
@@ -88,7 +88,7 @@
 //! | `libm` | no | float functions from `libm`; with `std` off the crate is `#![no_std]` and allocation-free |
 //! | `mint` | no | conversions to and from `mint` vectors (glam, nalgebra, cgmath interop) |
 //! | `approx` | no | `approx` comparison traits on the public vector types |
-//! | `reference` | no | the exact closed-form oracle ([`reference`]) |
+//! | `reference` | no | the exact closed-form oracle ([`reference`](mod@reference)) |
 //! | `faer` | no | batched dense sampling of the oracle with faer ([`reference::sampled`]) |
 //! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks |
 //! | `arbitrary` | no | `Arbitrary` case descriptions for `cargo fuzz` |

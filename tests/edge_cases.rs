@@ -4,7 +4,7 @@
 
 mod common;
 
-use motion_bound::reference::{dd::DoubleDouble, exact, Exact, Real as _};
+use motion_bound::reference::{dd::DoubleDouble, exact, Exact};
 use motion_bound::{
     directed_bound, evq, nevq, BoundKind, Direction, Float, InputError, Point3, Quantity,
     RigidMotion, TimeInterval, Vec3, VertexSet,

@@ -6,7 +6,7 @@ mod common;
 
 use common::{case_spec, check_sound, Oracle};
 use motion_bound::testkit::{Case, CaseSpec};
-use motion_bound::{evq_speed_unmargined, nevq_speed_unmargined, Float, VertexSet};
+use motion_bound::{evq_speed_unmargined, nevq_speed_unmargined, VertexSet};
 use proptest::test_runner::{Config, TestCaseError, TestError, TestRunner};
 
 #[derive(Clone, Copy, Debug)]

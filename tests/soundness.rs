@@ -6,7 +6,7 @@
 mod common;
 
 use common::{case_spec, cases, check_sound, Oracle};
-use motion_bound::{evq, nevq, Float as _, VertexSet};
+use motion_bound::{evq, nevq, VertexSet};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 
