@@ -73,8 +73,13 @@ fn inflation<T: Oracle>(which: Which) -> (f64, f64) {
     let mut runner = TestRunner::deterministic();
     let mut ratios = Vec::new();
     for _ in 0..20_000 {
-        let spec = common::plain_spec().new_tree(&mut runner).expect("tree").current();
-        let Some(case): Option<Case<T>> = spec.build() else { continue };
+        let spec = common::plain_spec()
+            .new_tree(&mut runner)
+            .expect("tree")
+            .current();
+        let Some(case): Option<Case<T>> = spec.build() else {
+            continue;
+        };
         let body = VertexSet::try_new(&case.vertices).expect("valid");
         let (with, without) = match which {
             Which::Nevq => (
@@ -104,13 +109,40 @@ fn the_margin_costs_a_small_relative_inflation() {
     // Regression guards from proofs/floating-point.md, "Inflation": NEVQ pays
     // about gamma_16 + gamma_3; EVQ also pays (48 + 12 theta_m) u of |c| R.
     for (name, (med, worst), u, guard) in [
-        ("NEVQ f64", inflation::<f64>(Which::Nevq), f64::UNIT_ROUNDOFF, 64.0),
-        ("EVQ f64", inflation::<f64>(Which::Evq), f64::UNIT_ROUNDOFF, 512.0),
-        ("NEVQ f32", inflation::<f32>(Which::Nevq), f64::from(f32::UNIT_ROUNDOFF), 64.0),
-        ("EVQ f32", inflation::<f32>(Which::Evq), f64::from(f32::UNIT_ROUNDOFF), 512.0),
+        (
+            "NEVQ f64",
+            inflation::<f64>(Which::Nevq),
+            f64::UNIT_ROUNDOFF,
+            64.0,
+        ),
+        (
+            "EVQ f64",
+            inflation::<f64>(Which::Evq),
+            f64::UNIT_ROUNDOFF,
+            512.0,
+        ),
+        (
+            "NEVQ f32",
+            inflation::<f32>(Which::Nevq),
+            f64::from(f32::UNIT_ROUNDOFF),
+            64.0,
+        ),
+        (
+            "EVQ f32",
+            inflation::<f32>(Which::Evq),
+            f64::from(f32::UNIT_ROUNDOFF),
+            512.0,
+        ),
     ] {
-        println!("| {name} | {med:.3e} ({:.0} u) | {worst:.3e} ({:.0} u) |", med / u, worst / u);
+        println!(
+            "| {name} | {med:.3e} ({:.0} u) | {worst:.3e} ({:.0} u) |",
+            med / u,
+            worst / u
+        );
         assert!(med >= 0.0, "{name}: the margin never lowers a bound");
-        assert!(med < guard * u, "{name}: median inflation {med:e} above {guard} u");
+        assert!(
+            med < guard * u,
+            "{name}: median inflation {med:e} above {guard} u"
+        );
     }
 }
