@@ -8,7 +8,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use motion_bound::testkit::{Case, CaseSpec};
-use motion_bound::{evq, nevq, Float, VertexSet};
+use motion_bound::{evq, nevq, VertexSet};
 use motion_bound_fuzz::{build_case, check_evq_le_nevq, check_sound, clamp, exact_hp, Precision};
 
 fn check<T: Precision>(what: &str, case: &Case<T>) {

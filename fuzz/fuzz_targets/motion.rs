@@ -23,7 +23,7 @@
 use libfuzzer_sys::fuzz_target;
 use motion_bound::reference::Real;
 use motion_bound::{
-    BodyPoint, Direction, Float, InputError, Point3, Quantity, RigidMotion, TimeInterval, Vec3,
+    BodyPoint, Direction, InputError, Point3, Quantity, RigidMotion, TimeInterval, Vec3,
 };
 use motion_bound_fuzz::inputs::{MotionCase, MotionInput};
 use motion_bound_fuzz::{check_components_result, in_range, norm, nums, wide, Precision};

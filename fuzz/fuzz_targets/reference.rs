@@ -23,7 +23,7 @@
 use libfuzzer_sys::fuzz_target;
 use motion_bound::reference::{exact, DoubleDouble, Exact, Frame, Real};
 use motion_bound::testkit::{Case, CaseSpec};
-use motion_bound::{BodyPoint, Float};
+use motion_bound::BodyPoint;
 use motion_bound_fuzz::{build_case, clamp, norm, Precision};
 
 type DD = DoubleDouble;

@@ -24,7 +24,7 @@ use motion_bound::reference::{exact, Real};
 use motion_bound::testkit::Case;
 use motion_bound::{
     directed_bound, evq, evq_speed, nevq, nevq_speed, BodySummary, BoundKind, DirectedBound,
-    Direction, Float, InputError, Point3, Quantity, RigidMotion, TimeInterval, Vec3, VertexSet,
+    Direction, InputError, Point3, Quantity, RigidMotion, TimeInterval, Vec3, VertexSet,
 };
 use motion_bound_fuzz::inputs::{RawInput, ValidationCase};
 use motion_bound_fuzz::{
@@ -76,8 +76,9 @@ fn run<T: Precision>(raw: &RawInput<T>) {
                     let len = norm::<T>(*r);
                     assert!(
                         Real::mul(<T::R as Real>::from_f64(r_hat.to_f64()), slack) >= len,
-                        "({}) max_radius {r_hat:e} below |{r:?}| = {:e}",
+                        "({}) max_radius {:e} below |{r:?}| = {:e}",
                         T::NAME,
+                        r_hat.to_f64(),
                         len.to_f64()
                     );
                 }
@@ -186,7 +187,7 @@ fn run<T: Precision>(raw: &RawInput<T>) {
         return;
     };
     let gap = raw.gap.get();
-    let (nb, eb) = bounds(&body, &motion, n, gap);
+    let (nb, _) = bounds(&body, &motion, n, gap);
 
     if let Ok(summary) = rs {
         let nr = nevq(&summary, &motion, n);
