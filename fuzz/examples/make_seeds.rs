@@ -22,7 +22,9 @@ fn write<T: for<'a> Arbitrary<'a> + Debug>(target: &str, name: &str, bytes: &[u8
         format!("{expected:?}"),
         "{target}/{name}: decodes to a different value"
     );
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("corpus").join(target);
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("corpus")
+        .join(target);
     fs::create_dir_all(&dir).expect("create corpus dir");
     fs::write(dir.join(format!("seed-{name}")), bytes).expect("write seed");
 }
@@ -40,7 +42,14 @@ fn main() {
             write("reference", &format!("{name}-{p}"), &e.0, &value);
 
             // EVQ: the whole interval plus one sub-interval per seed.
-            let (fa, fb) = [(0u16, 65535u16), (16384, 49151), (0, 0), (65535, 65535), (1, 65534), (40000, 2)][i % 6];
+            let (fa, fb) = [
+                (0u16, 65535u16),
+                (16384, 49151),
+                (0, 0),
+                (65535, 65535),
+                (1, 65534),
+                (40000, 2),
+            ][i % 6];
             let mut e = Enc::default();
             seeds::case_spec(&mut e, &spec);
             e.bool(double).u16(fa).u16(fb);

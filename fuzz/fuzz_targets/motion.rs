@@ -107,7 +107,12 @@ fn evaluate<T: Precision>(m: &RigidMotion<T>, point: [T; 3], t: T, n: Direction<
         return; // outside the documented domain: only "no panic"
     }
     let ctx = || format!("({}) motion {m:?}, r {point:?}, t {t:?}, n {n:?}", T::NAME);
-    for (what, x) in [("arm_at", arm), ("point_at", p), ("velocity_at", vel), ("directed_speed_at", [ds; 3])] {
+    for (what, x) in [
+        ("arm_at", arm),
+        ("point_at", p),
+        ("velocity_at", vel),
+        ("directed_speed_at", [ds; 3]),
+    ] {
         assert!(
             x.iter().all(|c| c.is_finite()),
             "{what} = {x:?} is not finite; {}",
@@ -145,7 +150,10 @@ fn evaluate<T: Precision>(m: &RigidMotion<T>, point: [T; 3], t: T, n: Direction<
         let one_c = Real::sub(rd(1.0), c);
         let rr = point.map(wide::<T>);
         let kxr = cross(k, rr);
-        let kdr = Real::add(Real::add(Real::mul(k[0], rr[0]), Real::mul(k[1], rr[1])), Real::mul(k[2], rr[2]));
+        let kdr = Real::add(
+            Real::add(Real::mul(k[0], rr[0]), Real::mul(k[1], rr[1])),
+            Real::mul(k[2], rr[2]),
+        );
         let tol = (64.0 * u + 8.0 * u * theta.abs()) * r_len + 64.0 * eta;
         for i in 0..3 {
             let ex = Real::add(
@@ -227,7 +235,11 @@ fn cross<R: Real>(a: [R; 3], b: [R; 3]) -> [R; 3] {
 
 fn check_restrict<T: Precision>(m: &RigidMotion<T>, [sa, sb]: [T; 2]) {
     let res = m.restrict(sa, sb);
-    if !check_components_result("RigidMotion::restrict", &res, &[(&[sa, sb], Quantity::Time)]) {
+    if !check_components_result(
+        "RigidMotion::restrict",
+        &res,
+        &[(&[sa, sb], Quantity::Time)],
+    ) {
         return;
     }
     let iv = m.interval();

@@ -59,7 +59,10 @@ fn run<T: Precision>(spec: &CaseSpec) {
     let frame: Frame<DD> = Frame::new(&case.motion, case.n);
     for r in &case.vertices {
         let prof = frame.profile(*r);
-        let coeffs = Real::add(Real::add(Real::abs(prof.a), Real::abs(prof.p)), Real::abs(prof.q));
+        let coeffs = Real::add(
+            Real::add(Real::abs(prof.a), Real::abs(prof.p)),
+            Real::abs(prof.q),
+        );
         let limit = Real::add(sup, Real::mul(coeffs, dd(1e-28)));
         for j in 0..SAMPLES {
             let t = if j == 0 {
@@ -67,7 +70,10 @@ fn run<T: Precision>(spec: &CaseSpec) {
             } else if j == SAMPLES - 1 {
                 tb
             } else {
-                let t = Real::add(ta, Real::mul(len, dd(f64::from(j) / f64::from(SAMPLES - 1))));
+                let t = Real::add(
+                    ta,
+                    Real::mul(len, dd(f64::from(j) / f64::from(SAMPLES - 1))),
+                );
                 if t < ta {
                     ta
                 } else if t > tb {

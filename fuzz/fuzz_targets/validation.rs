@@ -62,7 +62,10 @@ fn run<T: Precision>(raw: &RawInput<T>) {
             }
             None => {
                 let body = vs.unwrap_or_else(|e| {
-                    panic!("({}) valid vertices rejected with {e:?}: {verts:?}", T::NAME)
+                    panic!(
+                        "({}) valid vertices rejected with {e:?}: {verts:?}",
+                        T::NAME
+                    )
                 });
                 assert!(body.len() == verts.len() && !body.is_empty(), "length");
                 let r_hat = body.summary().max_radius();
@@ -89,7 +92,11 @@ fn run<T: Precision>(raw: &RawInput<T>) {
     // BodySummary::from_radius
     let radius = raw.radius.get();
     let rs = BodySummary::from_radius(radius);
-    if check_components_result("BodySummary::from_radius", &rs, &[(&[radius], Quantity::Radius)]) {
+    if check_components_result(
+        "BodySummary::from_radius",
+        &rs,
+        &[(&[radius], Quantity::Radius)],
+    ) {
         if radius < T::ZERO {
             assert!(
                 rs == Err(InputError::NegativeRadius),
@@ -132,7 +139,10 @@ fn run<T: Precision>(raw: &RawInput<T>) {
             T::NAME
         );
         assert!(
-            (-d).to_array().iter().zip(d.to_array()).all(|(a, b)| *a == -b),
+            (-d).to_array()
+                .iter()
+                .zip(d.to_array())
+                .all(|(a, b)| *a == -b),
             "negation"
         );
     }
@@ -234,7 +244,10 @@ fn bounds<T: Precision>(
         "({}) directed_bound disagrees: {dn:?} / {nb:?}, {de:?} / {eb:?}; {ctx:?}",
         T::NAME
     );
-    let (ns, es) = (nevq_speed(&body.summary(), motion, n), evq_speed(body, motion, n));
+    let (ns, es) = (
+        nevq_speed(&body.summary(), motion, n),
+        evq_speed(body, motion, n),
+    );
     assert!(
         ns == nb.speed && es == eb.speed,
         "({}) *_speed disagrees: {ns:?} / {:?}, {es:?} / {:?}; {ctx:?}",
@@ -278,7 +291,8 @@ fn oracle<T: Precision>(
         return;
     }
     let iv = motion.interval();
-    let theta = motion.angular_speed().to_f64() * iv.start().to_f64().abs().max(iv.end().to_f64().abs());
+    let theta =
+        motion.angular_speed().to_f64() * iv.start().to_f64().abs().max(iv.end().to_f64().abs());
     if !(theta <= 65536.0) {
         return;
     }
@@ -300,13 +314,23 @@ fn oracle<T: Precision>(
     let ex = exact::<T, T::R>(verts, motion, n);
     let body = VertexSet::try_new(verts).expect("validated");
     let what = if which == 0 { "" } else { " (restricted)" };
-    check_sound(&format!("nevq{what}"), &ex, nevq(&body.summary(), motion, n), &case);
+    check_sound(
+        &format!("nevq{what}"),
+        &ex,
+        nevq(&body.summary(), motion, n),
+        &case,
+    );
     check_sound(&format!("evq{what}"), &ex, evq(&body, motion, n), &case);
     if let Some(s) = radius {
         // A bounding sphere: only if it really contains every vertex.
         let r = <T::R as Real>::from_f64(s.max_radius().to_f64());
         if verts.iter().all(|v| norm::<T>(*v) <= r) {
-            check_sound(&format!("nevq (radius){what}"), &ex, nevq(&s, motion, n), &case);
+            check_sound(
+                &format!("nevq (radius){what}"),
+                &ex,
+                nevq(&s, motion, n),
+                &case,
+            );
         }
     }
 }

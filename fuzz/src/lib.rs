@@ -183,9 +183,7 @@ pub fn check_components_result<T: Float, X: Debug>(
     res: &Result<X, InputError>,
     groups: &[(&[T], Quantity)],
 ) -> bool {
-    let bad = groups
-        .iter()
-        .find(|(c, _)| c.iter().any(|&x| !in_range(x)));
+    let bad = groups.iter().find(|(c, _)| c.iter().any(|&x| !in_range(x)));
     match bad {
         None => true,
         Some((c, q)) => {

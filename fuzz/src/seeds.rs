@@ -89,7 +89,10 @@ pub fn case_spec(e: &mut Enc, s: &CaseSpec) {
         Layout::Single => 5,
     };
     e.variant(layout, 6);
-    e.i8(s.size_exp).f64x3(s.axis).i8(s.omega_exp).f64(s.omega_frac);
+    e.i8(s.size_exp)
+        .f64x3(s.axis)
+        .i8(s.omega_exp)
+        .f64(s.omega_frac);
     match s.sweep {
         Sweep::Free(x) => e.variant(0, 3).f64(x),
         Sweep::NearMultipleOfPi { k, ulps } => e.variant(1, 3).u8(k).i8(ulps),
@@ -206,7 +209,11 @@ pub fn blob() -> Vec<[f64; 3]> {
     let mut v = Vec::new();
     for i in 0..8u32 {
         let s = |k: u32| if i >> k & 1 == 1 { 0.5 } else { -0.5 };
-        v.push([s(0) + 0.01 * f64::from(i), s(1), s(2) - 0.003 * f64::from(i)]);
+        v.push([
+            s(0) + 0.01 * f64::from(i),
+            s(1),
+            s(2) - 0.003 * f64::from(i),
+        ]);
     }
     v
 }
@@ -240,7 +247,11 @@ pub fn hard_specs() -> Vec<(String, CaseSpec)> {
     out.push(("plain".to_string(), base.clone()));
     for k in 0..4u8 {
         for ulps in [-64i8, -1, 0, 1] {
-            for (lname, layout) in [("blob", Layout::Blob), ("plane", Layout::InPlane), ("single", Layout::Single)] {
+            for (lname, layout) in [
+                ("blob", Layout::Blob),
+                ("plane", Layout::InPlane),
+                ("single", Layout::Single),
+            ] {
                 let mut s = base.clone();
                 s.sweep = Sweep::NearMultipleOfPi { k, ulps };
                 s.layout = layout;
@@ -253,8 +264,20 @@ pub fn hard_specs() -> Vec<(String, CaseSpec)> {
     }
     for (nname, normal) in [
         ("parallel", Normal::Parallel),
-        ("nearly-parallel-1", Normal::NearlyParallel { towards: [1.0, 0.0, 0.0], ulps: 1 }),
-        ("nearly-parallel-64", Normal::NearlyParallel { towards: [0.0, 1.0, 0.3], ulps: 64 }),
+        (
+            "nearly-parallel-1",
+            Normal::NearlyParallel {
+                towards: [1.0, 0.0, 0.0],
+                ulps: 1,
+            },
+        ),
+        (
+            "nearly-parallel-64",
+            Normal::NearlyParallel {
+                towards: [0.0, 1.0, 0.3],
+                ulps: 64,
+            },
+        ),
         ("orthogonal", Normal::Orthogonal([0.1, 0.9, 0.4])),
     ] {
         for (sname, sweep) in [
@@ -287,10 +310,13 @@ pub fn hard_specs() -> Vec<(String, CaseSpec)> {
         }
     }
     for (name, f) in [
-        ("tiny-w-huge-body", (|s: &mut CaseSpec| {
-            s.omega_exp = -12;
-            s.size_exp = 12;
-        }) as fn(&mut CaseSpec)),
+        (
+            "tiny-w-huge-body",
+            (|s: &mut CaseSpec| {
+                s.omega_exp = -12;
+                s.size_exp = 12;
+            }) as fn(&mut CaseSpec),
+        ),
         ("huge-w-tiny-body", |s| {
             s.omega_exp = 4;
             s.omega_frac = 1.0;
@@ -328,7 +354,10 @@ pub fn hard_specs() -> Vec<(String, CaseSpec)> {
             s.sweep = Sweep::NearMultipleOfPi { k: 0, ulps: 0 };
         }),
         ("non-finite-raw", |s| {
-            s.vertices = vec![[f64::NAN, f64::INFINITY, -f64::INFINITY], [1e300, -1e300, 5e-324]];
+            s.vertices = vec![
+                [f64::NAN, f64::INFINITY, -f64::INFINITY],
+                [1e300, -1e300, 5e-324],
+            ];
             s.axis = [f64::NAN, 0.0, 0.0];
             s.omega_frac = f64::INFINITY;
             s.start = f64::NAN;
@@ -397,10 +426,29 @@ pub fn motion_cases() -> Vec<(String, MotionCase)> {
     let mut v = base.clone();
     v.point = m([Sp(16), Sp(18), Sp(20)]);
     v.times = [Sp(19), Sp(16)];
-    out.push(("point-and-time-non-finite".to_string(), MotionCase::Double(v)));
+    out.push((
+        "point-and-time-non-finite".to_string(),
+        MotionCase::Double(v),
+    ));
     let mut v = base.clone();
-    v.angular = m([Mo { mant: 1 << 30, exp: 5 }, Mo { mant: -3, exp: -60 }, Mo { mant: i32::MAX, exp: 0 }]);
-    v.times = [one(1e3), Mo { mant: i32::MIN, exp: 10 }];
+    v.angular = m([
+        Mo {
+            mant: 1 << 30,
+            exp: 5,
+        },
+        Mo { mant: -3, exp: -60 },
+        Mo {
+            mant: i32::MAX,
+            exp: 0,
+        },
+    ]);
+    v.times = [
+        one(1e3),
+        Mo {
+            mant: i32::MIN,
+            exp: 10,
+        },
+    ];
     out.push(("moderate-values".to_string(), MotionCase::Double(v)));
     let mut v = base.clone();
     v.sub = [one(0.75), one(0.25)];
@@ -430,7 +478,10 @@ pub fn motion_cases() -> Vec<(String, MotionCase)> {
     v.angular = m([Sp(7), Sp(8), Sp(7)]);
     v.point = m([Sp(7), Sp(8), Sp(7)]);
     v.times = [Sp(7), Sp(8)];
-    out.push(("max-input-everywhere-f32".to_string(), MotionCase::Single(v)));
+    out.push((
+        "max-input-everywhere-f32".to_string(),
+        MotionCase::Single(v),
+    ));
     let mut v = base32.clone();
     v.angular = m([Raw(3e-23), Raw(0.0), Raw(0.0)]);
     v.times = [Sp(7), Raw(1e17)];
@@ -462,25 +513,37 @@ pub fn validation_cases() -> Vec<(String, ValidationCase)> {
         sub: [Raw(0.25), Raw(0.5)],
         gap: Raw(0.1),
     };
-    out.push(("plain-f64".to_string(), ValidationCase::Double(base.clone())));
+    out.push((
+        "plain-f64".to_string(),
+        ValidationCase::Double(base.clone()),
+    ));
     let mut v = base.clone();
     v.vertices.clear();
     out.push(("empty-vertices".to_string(), ValidationCase::Double(v)));
     let mut v = base.clone();
     v.vertices.push([Sp(20), Raw(0.0), Raw(0.0)]);
     v.vertices.push([Sp(9), Raw(0.0), Raw(0.0)]);
-    out.push(("vertex-nan-then-huge".to_string(), ValidationCase::Double(v)));
+    out.push((
+        "vertex-nan-then-huge".to_string(),
+        ValidationCase::Double(v),
+    ));
     let mut v = base.clone();
     v.vertices.push([Sp(9), Sp(18), Raw(0.0)]);
     out.push(("vertex-huge-and-inf".to_string(), ValidationCase::Double(v)));
     let mut v = base.clone();
     v.radius = Sp(1);
     v.n = [Sp(1), Sp(0), Sp(1)];
-    out.push(("negative-zero-radius-zero-direction".to_string(), ValidationCase::Double(v)));
+    out.push((
+        "negative-zero-radius-zero-direction".to_string(),
+        ValidationCase::Double(v),
+    ));
     let mut v = base.clone();
     v.radius = Sp(8);
     v.n = [Sp(16), Sp(17), Sp(16)];
-    out.push(("radius-min-input-direction-max".to_string(), ValidationCase::Double(v)));
+    out.push((
+        "radius-min-input-direction-max".to_string(),
+        ValidationCase::Double(v),
+    ));
     let mut v = base.clone();
     v.n = [Sp(13), Sp(14), Sp(13)];
     out.push(("direction-subnormal".to_string(), ValidationCase::Double(v)));
@@ -493,7 +556,10 @@ pub fn validation_cases() -> Vec<(String, ValidationCase)> {
     v.linear = [Sp(8), Sp(7), Sp(8)];
     v.vertices = vec![[Sp(7), Sp(8), Sp(7)]];
     v.radius = Sp(7);
-    out.push(("max-input-everywhere".to_string(), ValidationCase::Double(v)));
+    out.push((
+        "max-input-everywhere".to_string(),
+        ValidationCase::Double(v),
+    ));
     let mut v = base.clone();
     v.angular = [Sp(10), Sp(11), Sp(10)];
     v.interval = [Sp(8), Sp(7)];
@@ -501,7 +567,10 @@ pub fn validation_cases() -> Vec<(String, ValidationCase)> {
     let mut v = base.clone();
     v.angular = [Sp(13), Sp(15), Sp(12)];
     v.vertices = vec![[Sp(13), Sp(12), Sp(15)], [Sp(7), Sp(0), Sp(0)]];
-    out.push(("underflow-everywhere".to_string(), ValidationCase::Double(v)));
+    out.push((
+        "underflow-everywhere".to_string(),
+        ValidationCase::Double(v),
+    ));
     let mut v = base.clone();
     v.n = [Raw(0.0), Raw(0.5), Raw(2.0)];
     v.sub = [Sp(0), Sp(2)];
@@ -515,7 +584,10 @@ pub fn validation_cases() -> Vec<(String, ValidationCase)> {
     v.gap = Sp(18);
     v.linear = [Raw(0.0); 3];
     v.angular = [Raw(0.0); 3];
-    out.push(("at-rest-infinite-gap".to_string(), ValidationCase::Double(v)));
+    out.push((
+        "at-rest-infinite-gap".to_string(),
+        ValidationCase::Double(v),
+    ));
 
     let base32 = RawInput::<f32> {
         vertices: vec![
@@ -532,24 +604,39 @@ pub fn validation_cases() -> Vec<(String, ValidationCase)> {
         sub: [Raw(0.25), Raw(0.5)],
         gap: Raw(0.1),
     };
-    out.push(("plain-f32".to_string(), ValidationCase::Single(base32.clone())));
+    out.push((
+        "plain-f32".to_string(),
+        ValidationCase::Single(base32.clone()),
+    ));
     let mut v = base32.clone();
     v.angular = [Sp(13), Sp(15), Sp(12)];
     v.vertices = vec![[Sp(13), Sp(12), Sp(15)], [Sp(7), Sp(0), Sp(0)]];
-    out.push(("underflow-everywhere-f32".to_string(), ValidationCase::Single(v)));
+    out.push((
+        "underflow-everywhere-f32".to_string(),
+        ValidationCase::Single(v),
+    ));
     let mut v = base32.clone();
     v.angular = [Sp(10), Sp(11), Sp(10)];
     v.linear = [Sp(13), Sp(0), Sp(0)];
-    out.push(("w-at-tiny-length-f32".to_string(), ValidationCase::Single(v)));
+    out.push((
+        "w-at-tiny-length-f32".to_string(),
+        ValidationCase::Single(v),
+    ));
     let mut v = base32.clone();
     v.interval = [Sp(8), Sp(7)];
     v.angular = [Sp(7), Sp(7), Sp(7)];
     v.linear = [Sp(8), Sp(7), Sp(8)];
     v.vertices = vec![[Sp(7), Sp(8), Sp(7)]];
-    out.push(("max-input-everywhere-f32".to_string(), ValidationCase::Single(v)));
+    out.push((
+        "max-input-everywhere-f32".to_string(),
+        ValidationCase::Single(v),
+    ));
     let mut v = base32;
     v.n = [Raw(0.0), Raw(0.5), Raw(2.0)];
     v.interval = [Raw(0.0), Sp(6)];
-    out.push(("n-parallel-to-w-full-turn-f32".to_string(), ValidationCase::Single(v)));
+    out.push((
+        "n-parallel-to-w-full-turn-f32".to_string(),
+        ValidationCase::Single(v),
+    ));
     out
 }
