@@ -1,34 +1,38 @@
 //! EVQ soundness and tightness order: for a fuzzed hard case in `f32` or
-//! `f64`, the EVQ speed and displacement are not NaN, are at least the
-//! high-precision exact values, and are at most NEVQ's; the same again on a
-//! sub-interval picked by two fractions of the input (`RigidMotion::restrict`,
-//! what a conservative-advancement step does), where NEVQ is checked too.
+//! `f64`, the EVQ and NEVQ speeds and displacements are not NaN and are at
+//! least the high-precision exact values, and EVQ's are at most NEVQ's; the
+//! same again on a sub-interval picked by two fractions of the input
+//! (`RigidMotion::restrict`, what a conservative-advancement step does).
 
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
 use motion_bound::testkit::{Case, CaseSpec};
-use motion_bound::{evq, nevq, VertexSet};
-use motion_bound_fuzz::{build_case, check_evq_le_nevq, check_sound, clamp, exact_hp, Precision};
+use motion_bound::{evq, nevq};
+use motion_bound_fuzz::{
+    build_case, check_evq_le_nevq, check_sound, clamp, vertex_set, Oracle, Precision,
+};
 
-fn check<T: Precision>(what: &str, case: &Case<T>) {
-    let body = VertexSet::try_new(&case.vertices)
-        .unwrap_or_else(|e| panic!("({}) built case rejected: {e:?}; case {case:?}", T::NAME));
+fn check<T: Precision>(sub: bool, case: &Case<T>) {
+    let body = vertex_set(case);
     let e = evq(&body, &case.motion, case.n);
     let n = nevq(&body.summary(), &case.motion, case.n);
-    let ex = exact_hp(case);
-    check_sound(what, &ex, e, case);
+    let oracle = Oracle::new(case);
+    let (we, wn) = if sub {
+        ("evq on the sub-interval", "nevq on the sub-interval")
+    } else {
+        ("evq", "nevq")
+    };
+    check_sound(we, &oracle, e, case);
+    check_sound(wn, &oracle, n, case);
     check_evq_le_nevq(e, n, case);
-    if what != "evq" {
-        check_sound("nevq on the sub-interval", &ex, n, case);
-    }
 }
 
 fn run<T: Precision>(spec: &CaseSpec, fa: u16, fb: u16) {
     let Some(case) = build_case::<T>(spec) else {
         return;
     };
-    check("evq", &case);
+    check(false, &case);
 
     // A sub-interval [ta, tb] of the case's interval.
     let iv = case.motion.interval();
@@ -55,7 +59,7 @@ fn run<T: Precision>(spec: &CaseSpec, fa: u16, fb: u16) {
         motion,
         n: case.n,
     };
-    check("evq on the sub-interval", &sub);
+    check(true, &sub);
 }
 
 fuzz_target!(|input: (CaseSpec, bool, u16, u16)| {

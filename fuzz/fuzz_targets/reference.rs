@@ -1,19 +1,26 @@
 //! The oracle against dense sampling. For a fuzzed hard case (in `f64`, or in
 //! `f32` where the `f64`-precision oracle used for `f32` bounds is
-//! cross-checked as well):
+//! cross-checked as well), on the exactly rescaled copy of the case that the
+//! bound targets' oracle uses (`motion_bound_fuzz::oracle`: speeds of
+//! magnitude about 1, `|w|` in `[1, 2)`):
 //!
 //! * the double-double exact sup speed is not NaN, is at least 0, and is at
 //!   least `|speed|` at 257 evenly spaced times of the interval, evaluated by
-//!   the oracle's own `Frame::profile(..).speed_at(t)` in double-double (the
-//!   closed-form sup against its own sinusoid; a tolerance of 1e-28 of the
-//!   sinusoid's coefficients covers double-double rounding only);
+//!   the oracle's own sinusoid `a + p cos(omega t) + q sin(omega t)` (the
+//!   formula of `SpeedProfile::speed_at`) in double-double; the tolerance is
+//!   1e-28 of the sinusoid's coefficients (double-double rounding) plus
+//!   2^-520 of the case's speed magnitude (coefficients whose squares
+//!   underflow in the reference's `hypot`);
 //! * it is at least the directed speed computed independently by
 //!   `RigidMotion::directed_speed_at` (plain floating point, Rodrigues'
 //!   rotation) at the same times, up to a relative 1e-9 (f64; 1e-4 for f32)
-//!   of the magnitude `|v| + |w| max |r|` plus 1e-300 absolute: that sample
-//!   is a floating-point approximation, so a tolerance is legitimate there;
+//!   of the magnitude `|v| + |w| max |r|` plus 8 `eta` of the bound type
+//!   (underflow): that sample is a floating-point approximation, so a
+//!   tolerance is legitimate there;
 //! * the exact displacement is not NaN, at least 0 and at most
-//!   `sup * length * (1 + 1e-12)`;
+//!   `sup * length (1 + 1e-12)` plus 1e-28 (double-double rounding of the
+//!   phase) and 2^-520 (as above) of the speed magnitude times the length,
+//!   plus 64 `eta` (sweeps so short that the angle is subnormal);
 //! * for `f32` cases, the `f64`-evaluated oracle agrees with the
 //!   double-double one to 1e-9 of the magnitude (so the strict comparisons of
 //!   `f32` bounds against the `f64` oracle are meaningful).
@@ -24,7 +31,7 @@ use libfuzzer_sys::fuzz_target;
 use motion_bound::reference::{exact, DoubleDouble, Exact, Frame, Real};
 use motion_bound::testkit::{Case, CaseSpec};
 use motion_bound::BodyPoint;
-use motion_bound_fuzz::{build_case, clamp, norm, Precision};
+use motion_bound_fuzz::{build_case, clamp, norm, oracle::pow2, Precision, Scaled};
 
 type DD = DoubleDouble;
 
@@ -34,10 +41,34 @@ fn dd(x: f64) -> DD {
     <DD as Real>::from_f64(x)
 }
 
+/// The `j`-th of [`SAMPLES`] evenly spaced times of `[start, end]`, with both
+/// ends exact.
+fn sample_time<X: PartialOrd + Copy>(j: u32, start: X, end: X, lerp: impl Fn(X, X, f64) -> X) -> X {
+    if j == 0 {
+        start
+    } else if j == SAMPLES - 1 {
+        end
+    } else {
+        let t = lerp(start, end, f64::from(j) / f64::from(SAMPLES - 1));
+        if t < start {
+            start
+        } else if t > end {
+            end
+        } else {
+            t
+        }
+    }
+}
+
 fn run<T: Precision>(spec: &CaseSpec) {
-    let Some(case) = build_case::<T>(spec) else {
+    let Some(original) = build_case::<T>(spec) else {
         return;
     };
+    let scaled = Scaled::new(&original);
+    let case = &scaled.case;
+    // What the reference cannot resolve: coefficients whose squares
+    // underflow in its hypot, relative to the (rescaled) speed magnitude.
+    let floor = pow2(-520) * scaled.mag;
     let ex: Exact<DD> = exact::<T, DD>(&case.vertices, &case.motion, case.n);
     let (sup, disp) = (ex.sup_speed, ex.displacement);
     assert!(
@@ -51,40 +82,47 @@ fn run<T: Precision>(spec: &CaseSpec) {
         T::NAME
     );
 
+    if !scaled.faithful {
+        // A velocity component too large to rescale with the rest (along a
+        // component of n below about 2^-500) was dropped: the rescaled case
+        // is not the original's, so the reference cannot be run on it.
+        return;
+    }
+
     let iv = case.motion.interval();
     let (ta, tb) = (dd(iv.start().to_f64()), dd(iv.end().to_f64()));
     let len = Real::sub(tb, ta);
 
-    // 1. The closed-form sup against the oracle's own sinusoid, in double-double.
+    // 1. The closed-form sup against the oracle's own sinusoid, in
+    //    double-double; the angle's sine and cosine are shared by all vertices.
     let frame: Frame<DD> = Frame::new(&case.motion, case.n);
-    for r in &case.vertices {
-        let prof = frame.profile(*r);
-        let coeffs = Real::add(
-            Real::add(Real::abs(prof.a), Real::abs(prof.p)),
-            Real::abs(prof.q),
-        );
-        let limit = Real::add(sup, Real::mul(coeffs, dd(1e-28)));
-        for j in 0..SAMPLES {
-            let t = if j == 0 {
-                ta
-            } else if j == SAMPLES - 1 {
-                tb
-            } else {
-                let t = Real::add(
-                    ta,
-                    Real::mul(len, dd(f64::from(j) / f64::from(SAMPLES - 1))),
-                );
-                if t < ta {
-                    ta
-                } else if t > tb {
-                    tb
-                } else {
-                    t
-                }
-            };
-            let s = Real::abs(prof.speed_at(t));
+    let profiles: Vec<_> = case
+        .vertices
+        .iter()
+        .map(|r| {
+            let prof = frame.profile(*r);
+            let coeffs = Real::add(
+                Real::add(Real::abs(prof.a), Real::abs(prof.p)),
+                Real::abs(prof.q),
+            );
+            let limit = Real::add(Real::add(sup, Real::mul(coeffs, dd(1e-28))), dd(floor));
+            (r, prof, limit)
+        })
+        .collect();
+    let omega = profiles.first().map_or(dd(0.0), |p| p.1.omega);
+    for j in 0..SAMPLES {
+        let t = sample_time(j, ta, tb, |a, b, f| {
+            Real::add(a, Real::mul(Real::sub(b, a), dd(f)))
+        });
+        let (sin, cos) = Real::mul(omega, t).sin_cos();
+        for (r, prof, limit) in &profiles {
+            // SpeedProfile::speed_at, with the angle's sin and cos shared
+            let s = Real::abs(Real::add(
+                Real::add(prof.a, Real::mul(prof.p, cos)),
+                Real::mul(prof.q, sin),
+            ));
             assert!(
-                !s.is_nan() && s <= limit,
+                !s.is_nan() && s <= *limit,
                 "({}) sampled |speed| {s:?} at t = {t:?} (sample {j}) exceeds the closed-form sup {sup:?}; vertex {r:?}, profile {prof:?}; case {case:?}",
                 T::NAME
             );
@@ -100,21 +138,13 @@ fn run<T: Precision>(spec: &CaseSpec) {
     let v_norm = norm::<T>(case.motion.linear().to_array()).to_f64();
     let w_norm = norm::<T>(case.motion.angular().to_array()).to_f64();
     let rel = if T::NAME == "f64" { 1e-9 } else { 1e-4 };
-    let tol = rel * (v_norm + w_norm * r_max) + 1e-300;
+    let tol = rel * (v_norm + w_norm * r_max) + 8.0 * T::ETA.to_f64() + floor;
     let sup_f = sup.to_f64();
     let (s_t, e_t) = (iv.start(), iv.end());
     for j in 0..SAMPLES {
-        let t = if j == 0 {
-            s_t
-        } else if j == SAMPLES - 1 {
-            e_t
-        } else {
-            clamp(
-                s_t + (e_t - s_t) * T::from_f64(f64::from(j) / f64::from(SAMPLES - 1)),
-                s_t,
-                e_t,
-            )
-        };
+        let t = sample_time(j, s_t, e_t, |a, b, f| {
+            clamp(a + (b - a) * T::from_f64(f), a, b)
+        });
         for r in &case.vertices {
             let s = case
                 .motion
@@ -129,7 +159,14 @@ fn run<T: Precision>(spec: &CaseSpec) {
     }
 
     // 3. The displacement is at most sup * length.
-    let cap = Real::mul(Real::mul(sup, len), dd(1.0 + 1e-12));
+    let slack = 1e-28 + pow2(-520);
+    let cap = Real::add(
+        Real::mul(Real::mul(sup, len), dd(1.0 + 1e-12)),
+        Real::add(
+            Real::mul(len, dd(slack * scaled.mag)),
+            dd(64.0 * pow2(-1074)),
+        ),
+    );
     assert!(
         disp <= cap,
         "({}) exact displacement {disp:?} above sup * length = {:?} (sup {sup:?}, length {len:?}); case {case:?}",
@@ -139,7 +176,7 @@ fn run<T: Precision>(spec: &CaseSpec) {
 
     // 4. The f64-evaluated oracle (used for f32 bounds) against double-double.
     if T::NAME == "f32" {
-        cross_check_f64_oracle(&case, &ex, v_norm + w_norm * r_max, len.to_f64());
+        cross_check_f64_oracle(case, &ex, v_norm + w_norm * r_max, len.to_f64());
     }
 }
 

@@ -9,18 +9,22 @@
 //!   bounds (the same pairing as `tests/common`).
 //! * [`Num`] is a raw float with a bias: any bit pattern, a moderate value,
 //!   or one of the boundary values of the crate's range analysis.
-//! * [`check_sound`] is the soundness oracle shared by the bound targets.
+//! * [`check_sound`] is the soundness oracle shared by the bound targets,
+//!   evaluated on an exactly rescaled copy of the case ([`oracle`]).
 
 #![forbid(unsafe_code)]
 
 use std::fmt::Debug;
 
 use arbitrary::Arbitrary;
-use motion_bound::reference::{exact, DoubleDouble, Exact, Real};
+use motion_bound::reference::{DoubleDouble, Real};
 use motion_bound::testkit::{Case, CaseSpec};
-use motion_bound::{DirectedBound, Float, InputError, Quantity};
+use motion_bound::{DirectedBound, Float, InputError, Quantity, VertexSet};
 
+pub mod oracle;
 pub mod seeds;
+
+pub use oracle::{check_sound, Oracle, Scaled};
 
 /// Vertices of a [`CaseSpec`] beyond this many are dropped before the case is
 /// built: the high-precision oracle costs microseconds per vertex, and a
@@ -221,55 +225,6 @@ pub fn norm<T: Precision>(a: [T; 3]) -> T::R {
     s.mul(sum.sqrt())
 }
 
-/// The high-precision exact directed speed and displacement of a case.
-#[must_use]
-pub fn exact_hp<T: Precision>(case: &Case<T>) -> Exact<T::R> {
-    exact::<T, T::R>(&case.vertices, &case.motion, case.n)
-}
-
-/// The soundness oracle: the bound is not NaN, and its speed and
-/// displacement are at least the high-precision exact supremum of the
-/// directed speed and the exact directed displacement. Compared as `f64`
-/// values, strictly (the oracle is exact for `f32` inputs up to `f64`
-/// rounding, and to about 2^-104 relative for `f64` inputs; see
-/// `proofs/floating-point.md`).
-pub fn check_sound<T: Precision>(
-    what: &str,
-    ex: &Exact<T::R>,
-    bound: DirectedBound<T>,
-    context: &dyn Debug,
-) {
-    let (s, d) = (bound.speed.to_f64(), bound.displacement.to_f64());
-    let (es, ed) = (ex.sup_speed.to_f64(), ex.displacement.to_f64());
-    assert!(
-        !es.is_nan() && !ed.is_nan(),
-        "{what} ({}): oracle is NaN: {ex:?}; case {context:?}",
-        T::NAME
-    );
-    assert!(
-        !s.is_nan() && !d.is_nan(),
-        "{what} ({}): NaN bound {bound:?}; case {context:?}",
-        T::NAME
-    );
-    assert!(
-        s >= 0.0 && d >= 0.0,
-        "{what} ({}): negative bound {bound:?}; case {context:?}",
-        T::NAME
-    );
-    assert!(
-        s >= es,
-        "{what} ({}): speed bound {s:e} ({s:?}) below the exact sup {es:e} ({es:?}), ratio {:e}; oracle {ex:?}; case {context:?}",
-        T::NAME,
-        s / es
-    );
-    assert!(
-        d >= ed,
-        "{what} ({}): displacement bound {d:e} ({d:?}) below the exact integral {ed:e} ({ed:?}), ratio {:e}; oracle {ex:?}; case {context:?}",
-        T::NAME,
-        d / ed
-    );
-}
-
 /// EVQ never looser than NEVQ, in speed and in displacement.
 pub fn check_evq_le_nevq<T: Precision>(
     evq: DirectedBound<T>,
@@ -303,6 +258,14 @@ pub fn build_case<T: Precision>(spec: &CaseSpec) -> Option<Case<T>> {
     } else {
         spec.build::<T>()
     }
+}
+
+/// The vertex set of a built case; a built case is valid by construction,
+/// so a rejection is a failure.
+#[must_use]
+pub fn vertex_set<T: Precision>(case: &Case<T>) -> VertexSet<'_, T> {
+    VertexSet::try_new(&case.vertices)
+        .unwrap_or_else(|e| panic!("({}) built case rejected: {e:?}; case {case:?}", T::NAME))
 }
 
 /// `x` clamped to `[lo, hi]` (for `lo <= hi`).
