@@ -10,7 +10,7 @@ use libfuzzer_sys::fuzz_target;
 use motion_bound::testkit::{Case, CaseSpec};
 use motion_bound::{evq, nevq};
 use motion_bound_fuzz::{
-    build_case, check_evq_le_nevq, check_sound, clamp, vertex_set, Oracle, Precision,
+    build_case, check_evq_le_nevq, check_sound, clamp, in_precision, vertex_set, Oracle, Precision,
 };
 
 fn check<T: Precision>(sub: bool, case: &Case<T>) {
@@ -64,9 +64,5 @@ fn run<T: Precision>(spec: &CaseSpec, fa: u16, fb: u16) {
 
 fuzz_target!(|input: (CaseSpec, bool, u16, u16)| {
     let (spec, double, fa, fb) = input;
-    if double {
-        run::<f64>(&spec, fa, fb);
-    } else {
-        run::<f32>(&spec, fa, fb);
-    }
+    in_precision!(double, run(&spec, fa, fb));
 });

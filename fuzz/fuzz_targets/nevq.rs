@@ -9,7 +9,7 @@
 use libfuzzer_sys::fuzz_target;
 use motion_bound::nevq;
 use motion_bound::testkit::CaseSpec;
-use motion_bound_fuzz::{build_case, check_sound, vertex_set, Oracle, Precision};
+use motion_bound_fuzz::{build_case, check_sound, in_precision, vertex_set, Oracle, Precision};
 
 fn run<T: Precision>(spec: &CaseSpec) {
     let Some(case) = build_case::<T>(spec) else {
@@ -19,11 +19,4 @@ fn run<T: Precision>(spec: &CaseSpec) {
     check_sound("nevq", &Oracle::new(&case), bound, &case);
 }
 
-fuzz_target!(|input: (CaseSpec, bool)| {
-    let (spec, double) = input;
-    if double {
-        run::<f64>(&spec);
-    } else {
-        run::<f32>(&spec);
-    }
-});
+fuzz_target!(|input: (CaseSpec, bool)| in_precision!(input.1, run(&input.0)));

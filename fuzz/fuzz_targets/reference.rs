@@ -31,7 +31,7 @@ use libfuzzer_sys::fuzz_target;
 use motion_bound::reference::{exact, DoubleDouble, Exact, Frame, Real};
 use motion_bound::testkit::{Case, CaseSpec};
 use motion_bound::BodyPoint;
-use motion_bound_fuzz::{build_case, clamp, norm, oracle::pow2, Precision, Scaled};
+use motion_bound_fuzz::{build_case, clamp, in_precision, norm, oracle::pow2, Precision, Scaled};
 
 type DD = DoubleDouble;
 
@@ -199,11 +199,4 @@ fn cross_check_f64_oracle<T: Precision>(case: &Case<T>, ex: &Exact<DD>, scale: f
     );
 }
 
-fuzz_target!(|input: (CaseSpec, bool)| {
-    let (spec, double) = input;
-    if double {
-        run::<f64>(&spec);
-    } else {
-        run::<f32>(&spec);
-    }
-});
+fuzz_target!(|input: (CaseSpec, bool)| in_precision!(input.1, run(&input.0)));

@@ -19,7 +19,9 @@ use std::fmt::Debug;
 use arbitrary::Arbitrary;
 use motion_bound::reference::{DoubleDouble, Real};
 use motion_bound::testkit::{Case, CaseSpec};
-use motion_bound::{DirectedBound, Float, InputError, Quantity, VertexSet};
+use motion_bound::{
+    DirectedBound, Float, InputError, Point3, Quantity, RigidMotion, TimeInterval, Vec3, VertexSet,
+};
 
 pub mod oracle;
 pub mod seeds;
@@ -268,6 +270,53 @@ pub fn vertex_set<T: Precision>(case: &Case<T>) -> VertexSet<'_, T> {
         .unwrap_or_else(|e| panic!("({}) built case rejected: {e:?}; case {case:?}", T::NAME))
 }
 
+/// `RigidMotion::try_new` on raw components, checked against the documented
+/// validation rule ([`check_components_result`]: `Ok` exactly when every
+/// component of the centre, `v` and `w` is in range, else the error naming
+/// the first offending quantity); the motion if it was accepted.
+#[must_use]
+pub fn checked_motion<T: Precision>(
+    centre: [T; 3],
+    linear: [T; 3],
+    angular: [T; 3],
+    interval: TimeInterval<T>,
+) -> Option<RigidMotion<T>> {
+    let res = RigidMotion::try_new(
+        Point3::from_array(centre),
+        Vec3::from_array(linear),
+        Vec3::from_array(angular),
+        interval,
+    );
+    let valid = check_components_result(
+        "RigidMotion::try_new",
+        &res,
+        &[
+            (&centre, Quantity::Centre),
+            (&linear, Quantity::LinearVelocity),
+            (&angular, Quantity::AngularVelocity),
+        ],
+    );
+    assert!(
+        valid == res.is_ok(),
+        "({}) RigidMotion::try_new({centre:?}, {linear:?}, {angular:?}) gave {res:?}",
+        T::NAME
+    );
+    res.ok()
+}
+
+/// `run::<f64>(args)` if the fuzzed flag `double` is set, else
+/// `run::<f32>(args)`.
+#[macro_export]
+macro_rules! in_precision {
+    ($double:expr, $run:ident($($arg:expr),*)) => {
+        if $double {
+            $run::<f64>($($arg),*)
+        } else {
+            $run::<f32>($($arg),*)
+        }
+    };
+}
+
 /// `x` clamped to `[lo, hi]` (for `lo <= hi`).
 #[must_use]
 pub fn clamp<T: Float>(x: T, lo: T, hi: T) -> T {
@@ -306,14 +355,17 @@ pub mod inputs {
         pub n: [Num<T>; 3],
     }
 
-    /// The `motion` target's input.
+    /// An input in `f32` or in `f64`.
     #[derive(Arbitrary, Clone, Debug)]
-    pub enum MotionCase {
+    pub enum Precisions<S, D> {
         /// In `f32`.
-        Single(MotionInput<f32>),
+        Single(S),
         /// In `f64`.
-        Double(MotionInput<f64>),
+        Double(D),
     }
+
+    /// The `motion` target's input.
+    pub type MotionCase = Precisions<MotionInput<f32>, MotionInput<f64>>;
 
     /// Fully raw input of every constructor, in precision `T`.
     #[derive(Arbitrary, Clone, Debug)]
@@ -339,11 +391,5 @@ pub mod inputs {
     }
 
     /// The `validation` target's input.
-    #[derive(Arbitrary, Clone, Debug)]
-    pub enum ValidationCase {
-        /// In `f32`.
-        Single(RawInput<f32>),
-        /// In `f64`.
-        Double(RawInput<f64>),
-    }
+    pub type ValidationCase = Precisions<RawInput<f32>, RawInput<f64>>;
 }

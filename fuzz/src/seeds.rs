@@ -12,8 +12,8 @@
 
 use motion_bound::testkit::{CaseSpec, Layout, Normal, Sweep};
 
-use crate::inputs::{MotionCase, MotionInput, RawInput, ValidationCase};
-use crate::Num;
+use crate::inputs::{MotionCase, MotionInput, Precisions, RawInput, ValidationCase};
+use crate::{Num, Precision};
 
 /// An `arbitrary` byte-format encoder.
 #[derive(Clone, Debug, Default)]
@@ -68,7 +68,7 @@ impl Enc {
     }
     /// The discriminant of variant `idx` of an enum of `count` variants.
     pub fn variant(&mut self, idx: u32, count: u32) -> &mut Self {
-        let x = ((u64::from(idx) << 32) + u64::from(count) - 1) / u64::from(count);
+        let x = (u64::from(idx) << 32).div_ceil(u64::from(count));
         let x = u32::try_from(x).expect("variant index below count");
         self.u32(x)
     }
@@ -158,20 +158,6 @@ pub fn motion_input<T: Bits>(e: &mut Enc, m: &MotionInput<T>) {
     nums(e, &m.n);
 }
 
-/// Encodes a [`MotionCase`].
-pub fn motion_case(e: &mut Enc, m: &MotionCase) {
-    match m {
-        MotionCase::Single(x) => {
-            e.variant(0, 2);
-            motion_input(e, x);
-        }
-        MotionCase::Double(x) => {
-            e.variant(1, 2);
-            motion_input(e, x);
-        }
-    }
-}
-
 /// Encodes a [`RawInput`].
 pub fn raw_input<T: Bits>(e: &mut Enc, r: &RawInput<T>) {
     for v in &r.vertices {
@@ -189,18 +175,33 @@ pub fn raw_input<T: Bits>(e: &mut Enc, r: &RawInput<T>) {
     num(e, &r.gap);
 }
 
-/// Encodes a [`ValidationCase`].
-pub fn validation_case(e: &mut Enc, v: &ValidationCase) {
-    match v {
-        ValidationCase::Single(x) => {
+/// Encodes a [`Precisions`] value with the encoder of each variant.
+pub fn precisions<S, D>(
+    e: &mut Enc,
+    x: &Precisions<S, D>,
+    single: fn(&mut Enc, &S),
+    double: fn(&mut Enc, &D),
+) {
+    match x {
+        Precisions::Single(x) => {
             e.variant(0, 2);
-            raw_input(e, x);
+            single(e, x);
         }
-        ValidationCase::Double(x) => {
+        Precisions::Double(x) => {
             e.variant(1, 2);
-            raw_input(e, x);
+            double(e, x);
         }
     }
+}
+
+/// Encodes a [`MotionCase`].
+pub fn motion_case(e: &mut Enc, m: &MotionCase) {
+    precisions(e, m, motion_input, motion_input);
+}
+
+/// Encodes a [`ValidationCase`].
+pub fn validation_case(e: &mut Enc, v: &ValidationCase) {
+    precisions(e, v, raw_input, raw_input);
 }
 
 /// A unit-ish blob of eight vertices (a slightly irregular cube).
@@ -377,266 +378,202 @@ pub fn hard_specs() -> Vec<(String, CaseSpec)> {
     out
 }
 
-fn m<T>(c: [Num<T>; 3]) -> [Num<T>; 3] {
-    c
+/// A seed: its name and how it changes the base input.
+type Variant<X> = (&'static str, fn(&mut X));
+
+/// The base input with each variant applied, named `NAME-f32` / `NAME-f64`.
+fn variants<T: Precision, X: Clone>(base: &X, list: &[Variant<X>]) -> Vec<(String, X)> {
+    list.iter()
+        .map(|(name, f)| {
+            let mut x = base.clone();
+            f(&mut x);
+            (format!("{name}-{}", T::NAME), x)
+        })
+        .collect()
+}
+
+/// The same seeds in both precisions.
+fn in_both<S, D>(
+    single: Vec<(String, S)>,
+    double: Vec<(String, D)>,
+) -> Vec<(String, Precisions<S, D>)> {
+    let single = single.into_iter().map(|(n, x)| (n, Precisions::Single(x)));
+    let double = double.into_iter().map(|(n, x)| (n, Precisions::Double(x)));
+    single.chain(double).collect()
+}
+
+/// `x` as an exact-or-nearest raw value of precision `T`.
+fn raw<T: Precision>(x: f64) -> Num<T> {
+    Num::Raw(T::from_f64(x))
+}
+
+/// Hard inputs for the `motion` target in precision `T`.
+fn motion_inputs<T: Precision>() -> Vec<(String, MotionInput<T>)> {
+    use Num::{Moderate as Mo, Special as Sp};
+    let base = MotionInput::<T> {
+        centre: [raw(1.0), raw(2.0), raw(3.0)],
+        linear: [raw(0.5), raw(0.0), raw(-0.25)],
+        angular: [raw(0.0), raw(0.0), Num::Raw(T::PI)],
+        interval: [raw(0.0), raw(1.0)],
+        point: [raw(1.0), raw(0.0), raw(0.5)],
+        times: [raw(0.5), raw(0.25)],
+        sub: [raw(0.25), raw(0.75)],
+        n: [raw(0.0), raw(1.0), raw(0.0)],
+    };
+    variants::<T, _>(
+        &base,
+        &[
+            ("plain", |_| {}),
+            ("max-input-everywhere", |v| {
+                v.angular = [Sp(7), Sp(8), Sp(7)];
+                v.point = [Sp(7), Sp(8), Sp(7)];
+                v.times = [Sp(7), Sp(8)];
+            }),
+            ("w-above-max-input", |v| {
+                v.angular = [Sp(9), raw(0.0), raw(0.0)]
+            }),
+            ("v-nan", |v| v.linear = [raw(0.0), Sp(20), raw(0.0)]),
+            ("centre-inf", |v| v.centre = [Sp(18), raw(0.0), Sp(9)]),
+            ("w-tiny-length-long-time", |v| {
+                v.angular = [Sp(10), Sp(10), Sp(10)];
+                v.times = [Sp(7), Sp(8)];
+            }),
+            ("w-square-subnormal", |v| {
+                // |w|^2 about 9 eta, at a time with |w| t huge
+                let (w, t) = if T::NAME == "f64" {
+                    (3e-162, 1e150)
+                } else {
+                    (3e-23, 1e17)
+                };
+                v.angular = [raw(w), raw(0.0), raw(0.0)];
+                v.times = [Sp(7), raw(t)];
+            }),
+            ("point-subnormal", |v| v.point = [Sp(13), Sp(14), Sp(15)]),
+            ("tiny-everything", |v| {
+                v.point = [Sp(13), Sp(14), Sp(15)];
+                v.angular = [Sp(10), Sp(11), Sp(12)];
+            }),
+            ("point-and-time-non-finite", |v| {
+                v.point = [Sp(16), Sp(18), Sp(20)];
+                v.times = [Sp(19), Sp(16)];
+            }),
+            ("moderate-values", |v| {
+                v.angular = [
+                    Mo {
+                        mant: 1 << 30,
+                        exp: 5,
+                    },
+                    Mo { mant: -3, exp: -60 },
+                    Mo {
+                        mant: i32::MAX,
+                        exp: 0,
+                    },
+                ];
+                v.times = [
+                    raw(1e3),
+                    Mo {
+                        mant: i32::MIN,
+                        exp: 10,
+                    },
+                ];
+            }),
+            ("restrict-reversed", |v| v.sub = [raw(0.75), raw(0.25)]),
+            ("restrict-outside", |v| v.sub = [raw(-0.5), raw(0.5)]),
+            ("restrict-nan", |v| v.sub = [Sp(20), raw(0.5)]),
+            ("no-rotation", |v| v.angular = [raw(0.0); 3]),
+        ],
+    )
 }
 
 /// Hard inputs for the `motion` target.
 #[must_use]
 pub fn motion_cases() -> Vec<(String, MotionCase)> {
-    use Num::{Moderate as Mo, Raw, Special as Sp};
-    let one = |x: f64| Raw(x);
-    let mut out = Vec::new();
-    let base = MotionInput::<f64> {
-        centre: m([one(1.0), one(2.0), one(3.0)]),
-        linear: m([one(0.5), one(0.0), one(-0.25)]),
-        angular: m([one(0.0), one(0.0), one(core::f64::consts::PI)]),
-        interval: [one(0.0), one(1.0)],
-        point: m([one(1.0), one(0.0), one(0.5)]),
-        times: [one(0.5), one(0.25)],
-        sub: [one(0.25), one(0.75)],
-        n: m([one(0.0), one(1.0), one(0.0)]),
-    };
-    out.push(("plain-f64".to_string(), MotionCase::Double(base.clone())));
-    let mut v = base.clone();
-    v.angular = m([Sp(7), Sp(8), Sp(7)]);
-    v.point = m([Sp(7), Sp(8), Sp(7)]);
-    v.times = [Sp(7), Sp(8)];
-    out.push(("max-input-everywhere".to_string(), MotionCase::Double(v)));
-    let mut v = base.clone();
-    v.angular = m([Sp(9), one(0.0), one(0.0)]);
-    out.push(("w-above-max-input".to_string(), MotionCase::Double(v)));
-    let mut v = base.clone();
-    v.linear = m([one(0.0), Sp(20), one(0.0)]);
-    out.push(("v-nan".to_string(), MotionCase::Double(v)));
-    let mut v = base.clone();
-    v.centre = m([Sp(18), one(0.0), Sp(9)]);
-    out.push(("centre-inf".to_string(), MotionCase::Double(v)));
-    let mut v = base.clone();
-    v.angular = m([Sp(10), Sp(10), Sp(10)]);
-    v.times = [Sp(7), Sp(8)];
-    out.push(("w-tiny-length-long-time".to_string(), MotionCase::Double(v)));
-    let mut v = base.clone();
-    v.angular = m([one(3e-162), one(0.0), one(0.0)]);
-    v.times = [Sp(7), one(1e150)];
-    out.push(("w-square-subnormal".to_string(), MotionCase::Double(v)));
-    let mut v = base.clone();
-    v.point = m([Sp(13), Sp(14), Sp(15)]);
-    out.push(("point-subnormal".to_string(), MotionCase::Double(v)));
-    let mut v = base.clone();
-    v.point = m([Sp(16), Sp(18), Sp(20)]);
-    v.times = [Sp(19), Sp(16)];
-    out.push((
-        "point-and-time-non-finite".to_string(),
-        MotionCase::Double(v),
-    ));
-    let mut v = base.clone();
-    v.angular = m([
-        Mo {
-            mant: 1 << 30,
-            exp: 5,
-        },
-        Mo { mant: -3, exp: -60 },
-        Mo {
-            mant: i32::MAX,
-            exp: 0,
-        },
-    ]);
-    v.times = [
-        one(1e3),
-        Mo {
-            mant: i32::MIN,
-            exp: 10,
-        },
-    ];
-    out.push(("moderate-values".to_string(), MotionCase::Double(v)));
-    let mut v = base.clone();
-    v.sub = [one(0.75), one(0.25)];
-    out.push(("restrict-reversed".to_string(), MotionCase::Double(v)));
-    let mut v = base.clone();
-    v.sub = [one(-0.5), one(0.5)];
-    out.push(("restrict-outside".to_string(), MotionCase::Double(v)));
-    let mut v = base.clone();
-    v.sub = [Sp(20), one(0.5)];
-    out.push(("restrict-nan".to_string(), MotionCase::Double(v)));
-    let mut v = base.clone();
-    v.angular = m([one(0.0), one(0.0), one(0.0)]);
-    out.push(("no-rotation".to_string(), MotionCase::Double(v)));
+    in_both(motion_inputs::<f32>(), motion_inputs::<f64>())
+}
 
-    let base32 = MotionInput::<f32> {
-        centre: m([Raw(1.0), Raw(2.0), Raw(3.0)]),
-        linear: m([Raw(0.5), Raw(0.0), Raw(-0.25)]),
-        angular: m([Raw(0.0), Raw(0.0), Raw(core::f32::consts::PI)]),
-        interval: [Raw(0.0), Raw(1.0)],
-        point: m([Raw(1.0), Raw(0.0), Raw(0.5)]),
-        times: [Raw(0.5), Raw(0.25)],
-        sub: [Raw(0.25), Raw(0.75)],
-        n: m([Raw(0.0), Raw(1.0), Raw(0.0)]),
+/// Hard inputs for the `validation` target in precision `T`.
+fn validation_inputs<T: Precision>() -> Vec<(String, RawInput<T>)> {
+    use Num::Special as Sp;
+    let base = RawInput::<T> {
+        vertices: vec![
+            [raw(1.0), raw(0.0), raw(0.0)],
+            [raw(0.0), raw(-1.0), raw(0.5)],
+            [raw(-0.3), raw(0.2), raw(-0.9)],
+        ],
+        radius: raw(2.0),
+        n: [raw(1.0), raw(1.0), raw(0.0)],
+        interval: [raw(0.0), raw(1.0)],
+        centre: [raw(0.0); 3],
+        linear: [raw(0.3), raw(0.0), raw(-1.0)],
+        angular: [raw(0.0), raw(0.5), raw(2.0)],
+        sub: [raw(0.25), raw(0.5)],
+        gap: raw(0.1),
     };
-    out.push(("plain-f32".to_string(), MotionCase::Single(base32.clone())));
-    let mut v = base32.clone();
-    v.angular = m([Sp(7), Sp(8), Sp(7)]);
-    v.point = m([Sp(7), Sp(8), Sp(7)]);
-    v.times = [Sp(7), Sp(8)];
-    out.push((
-        "max-input-everywhere-f32".to_string(),
-        MotionCase::Single(v),
-    ));
-    let mut v = base32.clone();
-    v.angular = m([Raw(3e-23), Raw(0.0), Raw(0.0)]);
-    v.times = [Sp(7), Raw(1e17)];
-    out.push(("w-square-subnormal-f32".to_string(), MotionCase::Single(v)));
-    let mut v = base32.clone();
-    v.point = m([Sp(13), Sp(14), Sp(15)]);
-    v.angular = m([Sp(10), Sp(11), Sp(12)]);
-    out.push(("tiny-everything-f32".to_string(), MotionCase::Single(v)));
-    out
+    variants::<T, _>(
+        &base,
+        &[
+            ("plain", |_| {}),
+            ("empty-vertices", |v| v.vertices.clear()),
+            ("vertex-nan-then-huge", |v| {
+                v.vertices.push([Sp(20), raw(0.0), raw(0.0)]);
+                v.vertices.push([Sp(9), raw(0.0), raw(0.0)]);
+            }),
+            ("vertex-huge-and-inf", |v| {
+                v.vertices.push([Sp(9), Sp(18), raw(0.0)])
+            }),
+            ("negative-zero-radius-zero-direction", |v| {
+                v.radius = Sp(1);
+                v.n = [Sp(1), Sp(0), Sp(1)];
+            }),
+            ("radius-min-input-direction-max", |v| {
+                v.radius = Sp(8);
+                v.n = [Sp(16), Sp(17), Sp(16)];
+            }),
+            ("direction-subnormal", |v| v.n = [Sp(13), Sp(14), Sp(13)]),
+            ("interval-reversed", |v| v.interval = [raw(1.0), raw(0.0)]),
+            ("max-input-everywhere", |v| {
+                v.interval = [Sp(8), Sp(7)];
+                v.angular = [Sp(7), Sp(7), Sp(7)];
+                v.linear = [Sp(8), Sp(7), Sp(8)];
+                v.vertices = vec![[Sp(7), Sp(8), Sp(7)]];
+                v.radius = Sp(7);
+            }),
+            ("w-at-tiny-length", |v| {
+                v.angular = [Sp(10), Sp(11), Sp(10)];
+                v.interval = [Sp(8), Sp(7)];
+            }),
+            ("w-at-tiny-length-v-subnormal", |v| {
+                v.angular = [Sp(10), Sp(11), Sp(10)];
+                v.linear = [Sp(13), Sp(0), Sp(0)];
+            }),
+            ("underflow-everywhere", |v| {
+                v.angular = [Sp(13), Sp(15), Sp(12)];
+                v.vertices = vec![[Sp(13), Sp(12), Sp(15)], [Sp(7), Sp(0), Sp(0)]];
+            }),
+            ("n-parallel-to-w", |v| {
+                v.n = [raw(0.0), raw(0.5), raw(2.0)];
+                v.sub = [Sp(0), Sp(2)];
+            }),
+            ("full-turn", |v| {
+                v.interval = [raw(0.0), Sp(6)];
+                v.angular = [raw(0.0), raw(0.0), raw(1.0)];
+                v.n = [raw(1.0), raw(0.0), raw(0.0)];
+            }),
+            ("n-parallel-to-w-full-turn", |v| {
+                v.n = [raw(0.0), raw(0.5), raw(2.0)];
+                v.interval = [raw(0.0), Sp(6)];
+            }),
+            ("at-rest-infinite-gap", |v| {
+                v.gap = Sp(18);
+                v.linear = [raw(0.0); 3];
+                v.angular = [raw(0.0); 3];
+            }),
+        ],
+    )
 }
 
 /// Hard inputs for the `validation` target.
 #[must_use]
 pub fn validation_cases() -> Vec<(String, ValidationCase)> {
-    use Num::{Raw, Special as Sp};
-    let mut out = Vec::new();
-    let base = RawInput::<f64> {
-        vertices: vec![
-            [Raw(1.0), Raw(0.0), Raw(0.0)],
-            [Raw(0.0), Raw(-1.0), Raw(0.5)],
-            [Raw(-0.3), Raw(0.2), Raw(-0.9)],
-        ],
-        radius: Raw(2.0),
-        n: [Raw(1.0), Raw(1.0), Raw(0.0)],
-        interval: [Raw(0.0), Raw(1.0)],
-        centre: [Raw(0.0), Raw(0.0), Raw(0.0)],
-        linear: [Raw(0.3), Raw(0.0), Raw(-1.0)],
-        angular: [Raw(0.0), Raw(0.5), Raw(2.0)],
-        sub: [Raw(0.25), Raw(0.5)],
-        gap: Raw(0.1),
-    };
-    out.push((
-        "plain-f64".to_string(),
-        ValidationCase::Double(base.clone()),
-    ));
-    let mut v = base.clone();
-    v.vertices.clear();
-    out.push(("empty-vertices".to_string(), ValidationCase::Double(v)));
-    let mut v = base.clone();
-    v.vertices.push([Sp(20), Raw(0.0), Raw(0.0)]);
-    v.vertices.push([Sp(9), Raw(0.0), Raw(0.0)]);
-    out.push((
-        "vertex-nan-then-huge".to_string(),
-        ValidationCase::Double(v),
-    ));
-    let mut v = base.clone();
-    v.vertices.push([Sp(9), Sp(18), Raw(0.0)]);
-    out.push(("vertex-huge-and-inf".to_string(), ValidationCase::Double(v)));
-    let mut v = base.clone();
-    v.radius = Sp(1);
-    v.n = [Sp(1), Sp(0), Sp(1)];
-    out.push((
-        "negative-zero-radius-zero-direction".to_string(),
-        ValidationCase::Double(v),
-    ));
-    let mut v = base.clone();
-    v.radius = Sp(8);
-    v.n = [Sp(16), Sp(17), Sp(16)];
-    out.push((
-        "radius-min-input-direction-max".to_string(),
-        ValidationCase::Double(v),
-    ));
-    let mut v = base.clone();
-    v.n = [Sp(13), Sp(14), Sp(13)];
-    out.push(("direction-subnormal".to_string(), ValidationCase::Double(v)));
-    let mut v = base.clone();
-    v.interval = [Raw(1.0), Raw(0.0)];
-    out.push(("interval-reversed".to_string(), ValidationCase::Double(v)));
-    let mut v = base.clone();
-    v.interval = [Sp(8), Sp(7)];
-    v.angular = [Sp(7), Sp(7), Sp(7)];
-    v.linear = [Sp(8), Sp(7), Sp(8)];
-    v.vertices = vec![[Sp(7), Sp(8), Sp(7)]];
-    v.radius = Sp(7);
-    out.push((
-        "max-input-everywhere".to_string(),
-        ValidationCase::Double(v),
-    ));
-    let mut v = base.clone();
-    v.angular = [Sp(10), Sp(11), Sp(10)];
-    v.interval = [Sp(8), Sp(7)];
-    out.push(("w-at-tiny-length".to_string(), ValidationCase::Double(v)));
-    let mut v = base.clone();
-    v.angular = [Sp(13), Sp(15), Sp(12)];
-    v.vertices = vec![[Sp(13), Sp(12), Sp(15)], [Sp(7), Sp(0), Sp(0)]];
-    out.push((
-        "underflow-everywhere".to_string(),
-        ValidationCase::Double(v),
-    ));
-    let mut v = base.clone();
-    v.n = [Raw(0.0), Raw(0.5), Raw(2.0)];
-    v.sub = [Sp(0), Sp(2)];
-    out.push(("n-parallel-to-w".to_string(), ValidationCase::Double(v)));
-    let mut v = base.clone();
-    v.interval = [Raw(0.0), Sp(6)];
-    v.angular = [Raw(0.0), Raw(0.0), Raw(1.0)];
-    v.n = [Raw(1.0), Raw(0.0), Raw(0.0)];
-    out.push(("full-turn".to_string(), ValidationCase::Double(v)));
-    let mut v = base.clone();
-    v.gap = Sp(18);
-    v.linear = [Raw(0.0); 3];
-    v.angular = [Raw(0.0); 3];
-    out.push((
-        "at-rest-infinite-gap".to_string(),
-        ValidationCase::Double(v),
-    ));
-
-    let base32 = RawInput::<f32> {
-        vertices: vec![
-            [Raw(1.0), Raw(0.0), Raw(0.0)],
-            [Raw(0.0), Raw(-1.0), Raw(0.5)],
-            [Raw(-0.3), Raw(0.2), Raw(-0.9)],
-        ],
-        radius: Raw(2.0),
-        n: [Raw(1.0), Raw(1.0), Raw(0.0)],
-        interval: [Raw(0.0), Raw(1.0)],
-        centre: [Raw(0.0), Raw(0.0), Raw(0.0)],
-        linear: [Raw(0.3), Raw(0.0), Raw(-1.0)],
-        angular: [Raw(0.0), Raw(0.5), Raw(2.0)],
-        sub: [Raw(0.25), Raw(0.5)],
-        gap: Raw(0.1),
-    };
-    out.push((
-        "plain-f32".to_string(),
-        ValidationCase::Single(base32.clone()),
-    ));
-    let mut v = base32.clone();
-    v.angular = [Sp(13), Sp(15), Sp(12)];
-    v.vertices = vec![[Sp(13), Sp(12), Sp(15)], [Sp(7), Sp(0), Sp(0)]];
-    out.push((
-        "underflow-everywhere-f32".to_string(),
-        ValidationCase::Single(v),
-    ));
-    let mut v = base32.clone();
-    v.angular = [Sp(10), Sp(11), Sp(10)];
-    v.linear = [Sp(13), Sp(0), Sp(0)];
-    out.push((
-        "w-at-tiny-length-f32".to_string(),
-        ValidationCase::Single(v),
-    ));
-    let mut v = base32.clone();
-    v.interval = [Sp(8), Sp(7)];
-    v.angular = [Sp(7), Sp(7), Sp(7)];
-    v.linear = [Sp(8), Sp(7), Sp(8)];
-    v.vertices = vec![[Sp(7), Sp(8), Sp(7)]];
-    out.push((
-        "max-input-everywhere-f32".to_string(),
-        ValidationCase::Single(v),
-    ));
-    let mut v = base32;
-    v.n = [Raw(0.0), Raw(0.5), Raw(2.0)];
-    v.interval = [Raw(0.0), Sp(6)];
-    out.push((
-        "n-parallel-to-w-full-turn-f32".to_string(),
-        ValidationCase::Single(v),
-    ));
-    out
+    in_both(validation_inputs::<f32>(), validation_inputs::<f64>())
 }
