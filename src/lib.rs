@@ -100,8 +100,11 @@
 #[cfg(not(any(feature = "std", feature = "libm")))]
 compile_error!("motion-bound needs either the `std` or the `libm` feature for its float functions");
 
+mod arc;
+mod ball;
 mod body;
 mod bound;
+pub mod ca;
 mod direction;
 mod error;
 mod evq;
@@ -111,6 +114,8 @@ mod interval;
 mod motion;
 mod nevq;
 mod point;
+mod pose;
+mod probe;
 mod rotation;
 mod rounding;
 mod vec3;
@@ -120,6 +125,8 @@ pub mod reference;
 #[cfg(feature = "testkit")]
 pub mod testkit;
 
+pub use arc::{PreparedMotion, SweptArc};
+pub use ball::BoundingBall;
 pub use body::{BodySummary, VertexSet};
 pub use bound::{directed_bound, BoundKind, DirectedBound};
 pub use direction::Direction;
@@ -134,6 +141,8 @@ pub use motion::RigidMotion;
 pub use nevq::nevq_speed_unmargined;
 pub use nevq::{nevq, nevq_speed};
 pub use point::{BodyPoint, Point3};
+pub use pose::Pose;
+pub use probe::DirectedProbe;
 pub use rotation::{rotate_about_axis, RotationPlane};
 pub use vec3::Vec3;
 

@@ -89,6 +89,76 @@ pub(crate) fn displacement_up<T: Float>(speed: T, length: T) -> T {
     }
 }
 
+/// `proofs/floating-point.md`, section "Pose": an upper bound of the distance
+/// between a body point placed by [`Pose`](crate::Pose) in floating point
+/// (`RigidMotion::pose_at` then `transform_point`) and its exact position,
+/// `delta <= u ((8 |a| + 96) R + 8 P) + 8 eta`, for a body within `R` of its
+/// rotation centre, rotated by the angle `a = |w| t`, whose centre lies within
+/// `P >= |x0| + |v| |t|` of the origin. Rounded up by its own `1 + gamma_8`.
+#[inline]
+#[must_use]
+pub(crate) fn pose_error_up<T: Float>(angle: T, radius: T, centre_reach: T) -> T {
+    let u = T::UNIT_ROUNDOFF;
+    let e = u
+        * ((T::from_u32(8) * angle.abs() + T::from_u32(96)) * radius
+            + T::from_u32(8) * centre_reach)
+        + T::from_u32(8) * T::ETA;
+    let e = e * (T::ONE + gamma::<T>(8));
+    if e.is_nan() {
+        T::INFINITY
+    } else {
+        e
+    }
+}
+
+/// Section "Gap": a lower bound of the exact slab gap along the exact unit
+/// direction `n/|n|`, from a computed gap `g^ = min_B fl(q.n) - max_A fl(p.n)`
+/// over placed points within `reach` of the origin, each placed with error at
+/// most `pose_err_a`, `pose_err_b`:
+/// `(g^ - pose_err_a - pose_err_b - gamma_8 reach_sum)(1 + gamma_3) (1 - gamma_7)`
+/// rounded down; `<= 0` means "not separated along n".
+#[inline]
+#[must_use]
+pub(crate) fn gap_down<T: Float>(gap: T, pose_err_a: T, pose_err_b: T, reach_sum: T) -> T {
+    let slack = (pose_err_a + pose_err_b + gamma::<T>(8) * reach_sum) * (T::ONE + gamma::<T>(3));
+    let g = (gap - slack) * (T::ONE - gamma::<T>(7));
+    if g.is_nan() {
+        -T::INFINITY
+    } else {
+        g
+    }
+}
+
+/// Section "Step": a time step no longer than `gap / (mu_a + mu_b)`, the
+/// longest step over which points moving along `n` at speeds at most `mu_a`
+/// and `mu_b` cannot close the gap: `fl(fl(gap / fl((mu_a + mu_b)(1 + gamma_2))) (1 - gamma_2))`.
+/// `+inf` when nothing moves; `0` for a non-positive gap or a NaN.
+#[inline]
+#[must_use]
+pub(crate) fn step_down<T: Float>(gap: T, mu_a: T, mu_b: T) -> T {
+    if gap.is_nan() || gap <= T::ZERO {
+        return T::ZERO;
+    }
+    let mu = (mu_a + mu_b) * (T::ONE + gamma::<T>(2));
+    if mu == T::ZERO {
+        return T::INFINITY;
+    }
+    let s = gap / mu * (T::ONE - gamma::<T>(2));
+    if s.is_nan() {
+        T::ZERO
+    } else {
+        s
+    }
+}
+
+/// Section "Step": `t' <= t + step` exactly: the rounded sum, moved down by
+/// one ulp (round to nearest errs by at most half an ulp of the result).
+#[inline]
+#[must_use]
+pub(crate) fn advance_down<T: Float>(t: T, step: T) -> T {
+    (t + step).next_down()
+}
+
 #[cfg(test)]
 mod tests {
     use super::gamma;
