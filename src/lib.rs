@@ -97,6 +97,9 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs, unreachable_pub, clippy::missing_assert_message)]
 
+#[cfg(feature = "alloc")]
+extern crate alloc;
+
 #[cfg(not(any(feature = "std", feature = "libm")))]
 compile_error!("motion-bound needs either the `std` or the `libm` feature for its float functions");
 
@@ -104,6 +107,8 @@ mod arc;
 mod ball;
 mod body;
 mod bound;
+#[cfg(feature = "alloc")]
+mod bvh;
 pub mod ca;
 mod direction;
 mod error;
@@ -129,6 +134,8 @@ pub use arc::{PreparedMotion, SweptArc};
 pub use ball::BoundingBall;
 pub use body::{BodySummary, VertexSet};
 pub use bound::{directed_bound, BoundKind, DirectedBound};
+#[cfg(feature = "alloc")]
+pub use bvh::BallTree;
 pub use direction::Direction;
 pub use error::{InputError, Quantity};
 #[cfg(feature = "testkit")]

@@ -70,9 +70,15 @@ impl<T: Float> DirectedProbe<T> {
     /// The EVQ speed bound of a vertex set (as [`evq_speed`](crate::evq_speed)).
     #[must_use]
     pub fn evq_speed(&self, body: &VertexSet<'_, T>) -> T {
-        let r_hat = body.summary().max_radius();
+        self.evq_speed_points(body.vertices(), body.summary().max_radius())
+    }
+
+    /// EVQ over `points`, all within `r_hat` of the rotation centre (`r_hat`
+    /// rounded up as by `rounding::radius_up`).
+    #[inline]
+    pub(crate) fn evq_speed_points(&self, points: &[[T; 3]], r_hat: T) -> T {
         let nevq = nevq_speed_from(&self.p, r_hat);
-        match self.extremal_sq(body.vertices(), r_hat * r_hat) {
+        match self.extremal_sq(points, r_hat * r_hat) {
             None => nevq,
             Some(e_sq) => {
                 let rot = evq_rotational_up(
@@ -85,6 +91,12 @@ impl<T: Float> DirectedProbe<T> {
                 assemble(self.p.linear_up(), rot).min_nan(nevq)
             }
         }
+    }
+
+    /// NEVQ for points within `r_hat` of the rotation centre.
+    #[inline]
+    pub(crate) fn nevq_speed_radius(&self, r_hat: T) -> T {
+        nevq_speed_from(&self.p, r_hat)
     }
 
     /// The speed bound of kind `kind` for a vertex set.

@@ -24,6 +24,16 @@ pub(crate) fn radius_up<T: Float>(max_sq: T) -> T {
     max_sq.sqrt() * (T::ONE + gamma::<T>(5)) + T::TWO * T::SQRT_ETA_UP
 }
 
+/// Section "Summary": the radius of a ball of computed centre `s` holding
+/// points `v_i`, from `max_sq = max_i fl(|fl(v_i - s)|^2)`: the subtraction
+/// errs by at most `u |v_i - s|` per component, so `|v_i - s| <= |fl(v_i - s)| / (1 - u)`,
+/// covered by the extra factor: `radius_up(max_sq) (1 + gamma_2)`.
+#[inline]
+#[must_use]
+pub(crate) fn offset_radius_up<T: Float>(max_sq: T) -> T {
+    radius_up(max_sq) * (T::ONE + gamma::<T>(2))
+}
+
 /// Section "Linear term": `|v.n| <= |fl(v.n)| + gamma_4 * fl(sum |v_k n_k|)`.
 #[inline]
 #[must_use]
