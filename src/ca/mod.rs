@@ -17,11 +17,17 @@
 //!   choice ([`BoundChoice`]).
 
 mod balls;
+mod convex;
 mod driver;
+#[cfg(feature = "alloc")]
+mod mesh;
 mod outcome;
 mod params;
 
 pub use balls::BallPair;
+pub use convex::{ConvexPair, Proximity};
+#[cfg(feature = "alloc")]
+pub use mesh::{MeshPair, TraversalStats};
 pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};
 pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness};
 pub use params::{BoundChoice, CaError, CaParams};
