@@ -85,17 +85,22 @@
 //! | feature | default | what it adds |
 //! |---|---|---|
 //! | `std` | yes | float functions from `std` |
-//! | `libm` | no | float functions from `libm`; with `std` off the crate is `#![no_std]` and allocation-free |
+//! | `libm` | no | float functions from `libm`; with `std` off the crate is `#![no_std]` (and allocation-free unless `alloc` is on) |
+//! | `alloc` | no | owned meshes (`TriMesh`), OFF input and output; needs no `std` |
+//! | `obj` | no | OBJ input with `tobj` (`TriMesh::from_obj_str`); implies `std` and `alloc` |
 //! | `mint` | no | conversions to and from `mint` vectors (glam, nalgebra, cgmath interop) |
 //! | `approx` | no | `approx` comparison traits on the public vector types |
 //! | `reference` | no | the exact closed-form oracle ([`reference`](mod@reference)) |
 //! | `faer` | no | batched dense sampling of the oracle with faer ([`reference::sampled`]) |
-//! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks |
+//! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks (implies `alloc`) |
 //! | `arbitrary` | no | `Arbitrary` case descriptions for `cargo fuzz` |
 
 #![cfg_attr(not(feature = "std"), no_std)]
 #![forbid(unsafe_code)]
 #![warn(missing_docs, unreachable_pub, clippy::missing_assert_message)]
+
+#[cfg(feature = "alloc")]
+extern crate alloc;
 
 #[cfg(not(any(feature = "std", feature = "libm")))]
 compile_error!("motion-bound needs either the `std` or the `libm` feature for its float functions");
@@ -108,6 +113,8 @@ mod evq;
 mod features;
 mod float;
 mod interval;
+#[cfg(feature = "alloc")]
+mod mesh;
 mod motion;
 mod nevq;
 mod point;
@@ -129,6 +136,10 @@ pub use evq::evq_speed_unmargined;
 pub use evq::{evq, evq_speed};
 pub use float::Float;
 pub use interval::TimeInterval;
+#[cfg(feature = "obj")]
+pub use mesh::ObjError;
+#[cfg(feature = "alloc")]
+pub use mesh::{EdgeReport, MeshError, OffError, OffErrorKind, TriMesh};
 pub use motion::RigidMotion;
 #[cfg(feature = "testkit")]
 pub use nevq::nevq_speed_unmargined;
