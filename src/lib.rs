@@ -86,7 +86,7 @@
 //! |---|---|---|
 //! | `std` | yes | float functions from `std` |
 //! | `libm` | no | float functions from `libm`; with `std` off the crate is `#![no_std]` (and allocation-free unless `alloc` is on) |
-//! | `alloc` | no | owned meshes (`TriMesh`), OFF input and output; needs no `std` |
+//! | `alloc` | no | owned meshes (`TriMesh`), OFF input and output, the `scenes` generators; needs no `std` |
 //! | `obj` | no | OBJ input with `tobj` (`TriMesh::from_obj_str`); implies `std` and `alloc` |
 //! | `mint` | no | conversions to and from `mint` vectors (glam, nalgebra, cgmath interop) |
 //! | `approx` | no | `approx` comparison traits on the public vector types |
@@ -124,6 +124,8 @@ mod vec3;
 
 #[cfg(feature = "reference")]
 pub mod reference;
+#[cfg(feature = "alloc")]
+pub mod scenes;
 #[cfg(feature = "testkit")]
 pub mod testkit;
 
