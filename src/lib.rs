@@ -73,6 +73,14 @@
 //! * **Bad input** gets a typed [`InputError`] at construction; evaluation
 //!   never panics and never returns NaN; `+inf` (sound) only on overflow.
 //!
+//! ## Meshes
+//!
+//! With the `alloc` feature, `TriMesh` owns a validated triangle mesh (the
+//! body points of a non-convex body, offsets from its rotation centre), checks
+//! that it is closed and outward-wound, reads and writes OFF (and OBJ with the
+//! `obj` feature), and hands its vertices to the bounds as a [`VertexSet`];
+//! the `scenes` module builds the seed's torus knots and other test bodies.
+//!
 //! ## Precision
 //!
 //! Both `f32` (what game engines use) and `f64` are supported through one

@@ -1,23 +1,6 @@
-//! Reading and writing the OFF format.
-//!
-//! OFF (Object File Format, from Geomview; what CGAL's data files use):
-//!
-//! ```text
-//! OFF
-//! # comments run from '#' to the end of the line
-//! V F E            (counts: vertices, faces, edges; E is ignored)
-//! x y z            (V vertex lines)
-//! k i_0 ... i_k-1  (F face lines, 0-based vertex indices)
-//! ```
-//!
-//! The reader is line-based (one vertex or face per line, as every OFF file
-//! in practice writes them), accepts the counts on the header line
-//! (`OFF 8 6 12`), skips blank lines and comments, triangulates a polygon
-//! `k >= 4` as the fan `(i_0, i_j, i_j+1)`, ignores anything after a face's
-//! indices (face colours), and for the `COFF`, `NOFF` and `CNOFF` variants
-//! ignores the extra per-vertex values. It never panics and reports the first
-//! problem with its line number; it allocates in proportion to the input's
-//! length, not to the counts it announces.
+//! Reading and writing the OFF format (Geomview's Object File Format, what
+//! CGAL's data files use); the dialect is described at
+//! `TriMesh::from_off_str`.
 
 use alloc::string::String;
 use alloc::vec::Vec;
@@ -53,8 +36,24 @@ fn parse_counts<'a>(mut tokens: impl Iterator<Item = &'a str>) -> Option<(usize,
 }
 
 impl<T: Float + FromStr> TriMesh<T> {
-    /// Reads a mesh from OFF text (see the [module docs](self) for the
-    /// accepted dialect). Polygons become triangle fans.
+    /// Reads a mesh from OFF text:
+    ///
+    /// ```text
+    /// OFF
+    /// # comments run from '#' to the end of the line
+    /// V F E            (counts: vertices, faces, edges; E is ignored)
+    /// x y z            (V vertex lines)
+    /// k i_0 ... i_k-1  (F face lines, 0-based vertex indices)
+    /// ```
+    ///
+    /// The reader is line-based (one vertex or face per line, as every OFF
+    /// file in practice writes them), accepts the counts on the header line
+    /// (`OFF 8 6 12`), skips blank lines and comments, triangulates a polygon
+    /// `k >= 4` as the fan `(i_0, i_j, i_j+1)`, ignores anything after a
+    /// face's indices (face colours), and for the `COFF`, `NOFF` and `CNOFF`
+    /// variants ignores the extra per-vertex values. It never panics, reports
+    /// the first problem with its line number, and allocates in proportion
+    /// to the text's length, not to the counts it announces.
     ///
     /// Numbers are parsed directly in `T` (correctly rounded, so `f32`
     /// meshes written by [`write_off`](Self::write_off) read back exactly).
