@@ -127,7 +127,6 @@ pub(crate) mod checks {
         let r = m.edge_report();
         assert!(r.is_closed(), "{what}: not closed: {r:?}");
         assert!(m.signed_volume() > 0.0, "{what}: not outward");
-        // Euler characteristic of the used vertices: 2 - 2 genus.
         for (i, [a, b, c]) in m.triangle_corners().enumerate() {
             let u = [0, 1, 2].map(|k| b[k].to_f64() - a[k].to_f64());
             let v = [0, 1, 2].map(|k| c[k].to_f64() - a[k].to_f64());
