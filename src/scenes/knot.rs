@@ -397,7 +397,7 @@ mod tests {
         for i in 0..n as usize {
             for j in i + 1..n as usize {
                 // Skip neighbours on the same strand: less than 1/12 of the
-                // parameter range apart (a third of a turn around the core).
+                // parameter range apart (a quarter turn around the core).
                 let gap = (j - i).min(n as usize - (j - i));
                 if gap < n as usize / 12 {
                     continue;
