@@ -73,6 +73,14 @@
 //! * **Bad input** gets a typed [`InputError`] at construction; evaluation
 //!   never panics and never returns NaN; `+inf` (sound) only on overflow.
 //!
+//! ## Meshes
+//!
+//! With the `alloc` feature, `TriMesh` owns a validated triangle mesh (the
+//! body points of a non-convex body, offsets from its rotation centre), checks
+//! that it is closed and outward-wound, reads and writes OFF (and OBJ with the
+//! `obj` feature), and hands its vertices to the bounds as a [`VertexSet`];
+//! the `scenes` module builds the seed's torus knots and other test bodies.
+//!
 //! ## Precision
 //!
 //! Both `f32` (what game engines use) and `f64` are supported through one
@@ -85,12 +93,14 @@
 //! | feature | default | what it adds |
 //! |---|---|---|
 //! | `std` | yes | float functions from `std` |
-//! | `libm` | no | float functions from `libm`; with `std` off the crate is `#![no_std]` and allocation-free |
+//! | `libm` | no | float functions from `libm`; with `std` off the crate is `#![no_std]` (and allocation-free unless `alloc` is on) |
+//! | `alloc` | no | owned meshes (`TriMesh`), OFF input and output, the `scenes` generators; needs no `std` |
+//! | `obj` | no | OBJ input with `tobj` (`TriMesh::from_obj_str`); implies `std` and `alloc` |
 //! | `mint` | no | conversions to and from `mint` vectors (glam, nalgebra, cgmath interop) |
 //! | `approx` | no | `approx` comparison traits on the public vector types |
 //! | `reference` | no | the exact closed-form oracle ([`reference`](mod@reference)) |
 //! | `faer` | no | batched dense sampling of the oracle with faer ([`reference::sampled`]) |
-//! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks |
+//! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks (implies `alloc`) |
 //! | `arbitrary` | no | `Arbitrary` case descriptions for `cargo fuzz` |
 
 #![cfg_attr(not(feature = "std"), no_std)]
@@ -116,6 +126,8 @@ mod evq;
 mod features;
 mod float;
 mod interval;
+#[cfg(feature = "alloc")]
+mod mesh;
 mod motion;
 mod nevq;
 mod point;
@@ -127,6 +139,8 @@ mod vec3;
 
 #[cfg(feature = "reference")]
 pub mod reference;
+#[cfg(feature = "alloc")]
+pub mod scenes;
 #[cfg(feature = "testkit")]
 pub mod testkit;
 
@@ -143,6 +157,10 @@ pub use evq::evq_speed_unmargined;
 pub use evq::{evq, evq_speed};
 pub use float::Float;
 pub use interval::TimeInterval;
+#[cfg(feature = "obj")]
+pub use mesh::ObjError;
+#[cfg(feature = "alloc")]
+pub use mesh::{EdgeReport, MeshError, OffError, OffErrorKind, TriMesh};
 pub use motion::RigidMotion;
 #[cfg(feature = "testkit")]
 pub use nevq::nevq_speed_unmargined;
