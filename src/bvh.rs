@@ -4,7 +4,7 @@
 
 use alloc::vec::Vec;
 
-use crate::rounding::offset_radius_up;
+use crate::rounding::{gamma, offset_radius_up};
 use crate::{BoundingBall, Float, InputError};
 
 /// Marks a leaf in [`Node::right`].
@@ -15,6 +15,11 @@ const LEAF: u32 = u32::MAX;
 pub(crate) struct Node<T> {
     /// Contains every point of every triangle below the node.
     pub(crate) ball: BoundingBall<T>,
+    /// Half extents of the node's body-frame box, centred at the ball's
+    /// centre and holding every corner (rounded up).
+    pub(crate) half: [T; 3],
+    /// `|half|_1`, rounded up.
+    pub(crate) half_l1: T,
     /// The left child, or the leaf's index when `right == LEAF`.
     pub(crate) left: u32,
     /// The right child, or `LEAF`.
@@ -107,10 +112,13 @@ impl<T: Float> BallTree<T> {
         depth: usize,
     ) -> Result<usize, InputError> {
         let index = self.nodes.len();
-        let ball = enclosing_ball(order.iter().map(|&l| &leaves[l as usize].corners))?;
+        let (ball, half) = enclosing_ball(order.iter().map(|&l| &leaves[l as usize].corners))?;
+        let half_l1 = (half[0] + half[1] + half[2]) * (T::ONE + gamma::<T>(2));
         if let [only] = order {
             self.nodes.push(Node {
                 ball,
+                half,
+                half_l1,
                 left: *only,
                 right: LEAF,
             });
@@ -118,6 +126,8 @@ impl<T: Float> BallTree<T> {
         }
         self.nodes.push(Node {
             ball,
+            half,
+            half_l1,
             left: 0,
             right: 0,
         });
@@ -158,6 +168,22 @@ impl<T: Float> BallTree<T> {
         Ok(dl.max(dr))
     }
 
+    /// The hierarchy of a validated mesh (vertices relative to its rotation centre).
+    ///
+    /// # Errors
+    /// Only the core's range errors, for a mesh so large that a node radius
+    /// exceeds [`Float::MAX_INPUT`].
+    ///
+    /// ```
+    /// use motion_bound::{scenes, BallTree};
+    /// let mesh = scenes::torus::<f64>(1.0, 0.25, 24, 12).unwrap();
+    /// let tree = BallTree::try_from_mesh(&mesh).unwrap();
+    /// assert_eq!(tree.triangle_count(), mesh.triangle_count());
+    /// ```
+    pub fn try_from_mesh(mesh: &crate::TriMesh<T>) -> Result<Self, InputError> {
+        Self::try_new(mesh.vertices(), mesh.triangles())
+    }
+
     /// The root's ball: contains the whole mesh.
     #[must_use]
     pub fn root_ball(&self) -> &BoundingBall<T> {
@@ -190,10 +216,12 @@ impl<T: Float> BallTree<T> {
 }
 
 /// A ball holding every corner: centred at the corners' bounding-box centre,
-/// radius the largest corner distance rounded up (`rounding::offset_radius_up`).
+/// radius the largest corner distance rounded up (`rounding::offset_radius_up`);
+/// and the box's half extents about that centre, rounded up
+/// (`fl(fl(x)(1 + gamma_2)) >= x` for the exact `x = max(hi - c, c - lo)`).
 fn enclosing_ball<'a, T: Float + 'a>(
     tris: impl Iterator<Item = &'a [[T; 3]; 3]> + Clone,
-) -> Result<BoundingBall<T>, InputError> {
+) -> Result<(BoundingBall<T>, [T; 3]), InputError> {
     let (mut lo, mut hi) = ([T::INFINITY; 3], [-T::INFINITY; 3]);
     for tri in tris.clone() {
         for c in tri {
@@ -212,7 +240,13 @@ fn enclosing_ball<'a, T: Float + 'a>(
             max_sq = max_sq.max_nan(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         }
     }
-    BoundingBall::try_new(centre, offset_radius_up(max_sq))
+    let half = [0, 1, 2].map(|k| {
+        (hi[k] - centre[k]).max_nan(centre[k] - lo[k]) * (T::ONE + gamma::<T>(2)) + T::ETA
+    });
+    Ok((
+        BoundingBall::try_new(centre, offset_radius_up(max_sq))?,
+        half,
+    ))
 }
 
 #[cfg(test)]

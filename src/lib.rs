@@ -125,6 +125,7 @@ mod error;
 mod evq;
 mod features;
 mod float;
+mod geometry;
 mod interval;
 #[cfg(feature = "alloc")]
 mod mesh;
@@ -156,6 +157,8 @@ pub use error::{InputError, Quantity};
 pub use evq::evq_speed_unmargined;
 pub use evq::{evq, evq_speed};
 pub use float::Float;
+pub use geometry::closest::{point_triangle, segment_segment, triangle_triangle, ClosestPoints};
+pub use geometry::gjk::{gjk_distance, ConvexPolytope, GjkParams, GjkResult, SupportMap};
 pub use interval::TimeInterval;
 #[cfg(feature = "obj")]
 pub use mesh::ObjError;

@@ -121,6 +121,18 @@ pub(crate) fn pose_error_up<T: Float>(angle: T, radius: T, centre_reach: T) -> T
     }
 }
 
+/// Section "Box": an upper bound of the exact support `sum_k h_k |(R^T n)_k|`
+/// of a body-frame box of half extents `h` placed by the computed rotation,
+/// from the computed `supp^ = fl(sum_k h_k |fl(R^T n)_k|)`:
+/// `supp^ (1 + gamma_4) + pose_error_up(angle, |h|_1, 0) + gamma_8 |h|_1`.
+#[inline]
+#[must_use]
+pub(crate) fn box_support_up<T: Float>(supp: T, half_l1: T, angle: T) -> T {
+    supp * (T::ONE + gamma::<T>(4))
+        + pose_error_up(angle, half_l1, T::ZERO)
+        + gamma::<T>(8) * half_l1
+}
+
 /// Section "Gap": a lower bound of the exact slab gap along the exact unit
 /// direction `n/|n|`, from a computed gap `g^ = min_B fl(q.n) - max_A fl(p.n)`
 /// over placed points within `reach` of the origin, each placed with error at

@@ -26,8 +26,8 @@ mod params;
 
 pub use balls::BallPair;
 pub use convex::{ConvexPair, Proximity};
+pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};
 #[cfg(feature = "alloc")]
 pub use mesh::{MeshPair, TraversalStats};
-pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};
 pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness};
 pub use params::{BoundChoice, CaError, CaParams};

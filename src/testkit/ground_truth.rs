@@ -5,7 +5,7 @@
 //! unit quaternion computed here (not [`RigidMotion::pose_at`]), candidate
 //! triangle pairs come from a sort-and-sweep of axis-aligned boxes (not the
 //! ball trees), and intersection is decided by exact orientation predicates
-//! ([`triangles_intersect_exact`](crate::triangles_intersect_exact)). Sampling can
+//! ([`triangles_intersect_exact`](crate::testkit::triangles_intersect_exact)). Sampling can
 //! miss a contact shorter than the sampling step; it never reports one that
 //! is not there (for the rounded sample positions).
 
@@ -39,7 +39,11 @@ pub fn place(motion: &RigidMotion<f64>, r: [f64; 3], t: f64) -> [f64; 3] {
         let (s, c) = (half.sin() / omega, half.cos());
         let (qx, qy, qz) = (w.x * s, w.y * s, w.z * s);
         // r' = r + 2 q_w (q x r) + 2 q x (q x r)
-        let cx = [qy * r[2] - qz * r[1], qz * r[0] - qx * r[2], qx * r[1] - qy * r[0]];
+        let cx = [
+            qy * r[2] - qz * r[1],
+            qz * r[0] - qx * r[2],
+            qx * r[1] - qy * r[0],
+        ];
         let ccx = [
             qy * cx[2] - qz * cx[1],
             qz * cx[0] - qx * cx[2],
@@ -93,10 +97,14 @@ pub fn intersect_at(
             if !overlap {
                 continue;
             }
-            let (ia, ib) = if bx.2 == 0 { (bx.3, other.3) } else { (other.3, bx.3) };
+            let (ia, ib) = if bx.2 == 0 {
+                (bx.3, other.3)
+            } else {
+                (other.3, bx.3)
+            };
             let ta = a.triangles[ia].map(|v| pa[v as usize]);
             let tb = b.triangles[ib].map(|v| pb[v as usize]);
-            if crate::triangles_intersect_exact(&ta, &tb) {
+            if crate::testkit::triangles_intersect_exact(&ta, &tb) {
                 return true;
             }
         }

@@ -1,0 +1,17 @@
+//! Distance queries between triangles and convex polytopes.
+//!
+//! Conservative advancement needs, at each step, the distance `d` between
+//! the two bodies and the closest direction `n`; this module supplies both:
+//! [`closest`] for exact triangle-level queries (the ground truth and the
+//! per-triangle-pair query of a bounding-volume traversal), [`gjk`] for
+//! convex polytopes. Everything is `no_std`, allocation-free and generic over
+//! [`Float`](crate::Float).
+
+pub(crate) mod closest;
+#[cfg(feature = "testkit")]
+pub(crate) mod exact;
+pub(crate) mod gjk;
+mod intersect;
+mod predicates;
+mod scale;
+mod simplex;
