@@ -154,3 +154,64 @@ impl<T: Float, P: Proximity<T>> CaStep<T> for ConvexPair<'_, T, P> {
         }
     }
 }
+
+/// The [`Proximity`] oracle of this crate for convex polytopes: GJK
+/// ([`gjk_distance`](crate::gjk_distance)) on the two vertex sets placed at
+/// each step.
+#[derive(Clone, Copy, Debug)]
+pub struct GjkProximity<'a, T> {
+    a: &'a [[T; 3]],
+    b: &'a [[T; 3]],
+    params: crate::GjkParams<T>,
+}
+
+impl<'a, T: Float> GjkProximity<'a, T> {
+    /// GJK between the convex hulls of `a` and `b` (body points), with
+    /// default [`GjkParams`](crate::GjkParams).
+    #[must_use]
+    pub fn new(a: &'a [[T; 3]], b: &'a [[T; 3]]) -> Self {
+        Self {
+            a,
+            b,
+            params: crate::GjkParams::default(),
+        }
+    }
+}
+
+impl<T: Float> Proximity<T> for GjkProximity<'_, T> {
+    fn closest(&mut self, pose_a: &Pose<T>, pose_b: &Pose<T>) -> Option<Witness<T>> {
+        let pa = crate::ConvexPolytope::try_new(self.a, *pose_a).ok()?;
+        let pb = crate::ConvexPolytope::try_new(self.b, *pose_b).ok()?;
+        let r = crate::gjk_distance(&pa, &pb, &self.params);
+        if r.intersecting {
+            return None;
+        }
+        Some(Witness {
+            distance: r.distance,
+            on_a: r.on_a,
+            on_b: r.on_b,
+        })
+    }
+}
+
+impl<'a, T: Float> ConvexPair<'a, T, GjkProximity<'a, T>> {
+    /// The pair of convex bodies `a`, `b` with GJK distances: conservative
+    /// advancement of convex polytopes out of the box.
+    ///
+    /// ```
+    /// use motion_bound::ca::{time_of_impact, CaParams, ConvexPair};
+    /// use motion_bound::{RigidMotion, VertexSet};
+    /// let tet = [[1.0, 1.0, 1.0], [1.0, -1.0, -1.0], [-1.0, 1.0, -1.0], [-1.0, -1.0, 1.0]];
+    /// let body = VertexSet::try_new(&tet)?;
+    /// let a = RigidMotion::try_from_arrays([-4.0, 0.0, 0.0], [8.0, 0.0, 0.0], [0.0, 3.0, 1.0])?;
+    /// let b = RigidMotion::try_from_arrays([4.0, 0.0, 0.0], [-2.0, 0.0, 0.0], [2.0, 0.0, 0.0])?;
+    /// let report = time_of_impact(&mut ConvexPair::with_gjk(body, body), &a, &b, &CaParams::default())?;
+    /// let t = report.outcome.contact().expect("they collide").time;
+    /// assert!(t > 0.0 && t < 0.8);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    #[must_use]
+    pub fn with_gjk(a: VertexSet<'a, T>, b: VertexSet<'a, T>) -> Self {
+        Self::new(a, b, GjkProximity::new(a.vertices(), b.vertices()))
+    }
+}

@@ -25,7 +25,7 @@ mod outcome;
 mod params;
 
 pub use balls::BallPair;
-pub use convex::{ConvexPair, Proximity};
+pub use convex::{ConvexPair, GjkProximity, Proximity};
 pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};
 #[cfg(feature = "alloc")]
 pub use mesh::{MeshPair, TraversalStats};

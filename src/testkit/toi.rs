@@ -112,13 +112,13 @@ pub struct FlyBy {
 /// A random fly-by for bodies within `reach_a` and `reach_b` of their
 /// rotation centres: B sits at the origin spinning at up to `spin / 4`;
 /// A starts `1.1` to `1.6` times `reach_a + reach_b` away in a random
-/// direction, aims at a random point within `0.4 (reach_a + reach_b)` of
-/// the origin (so most queries collide), and spins at up to `spin` rad per
-/// unit time about a random axis.
+/// direction, aims at a random point within `0.8 (reach_a + reach_b)` of
+/// the origin (most queries collide, some pass close by), and spins at up to
+/// `spin` rad per unit time about a random axis.
 pub fn fly_by(rng: &mut Rng, reach_a: f64, reach_b: f64, spin: f64) -> FlyBy {
     let reach = reach_a + reach_b;
     let start = rng.direction().map(|x| x * reach * rng.range(1.1, 1.6));
-    let aim = rng.direction().map(|x| x * reach * 0.4 * rng.unit());
+    let aim = rng.direction().map(|x| x * reach * 0.8 * rng.unit());
     let v = [0, 1, 2].map(|k| aim[k] - start[k]);
     let wa = rng.direction().map(|x| x * spin * rng.unit());
     let wb = rng.direction().map(|x| x * spin * 0.25 * rng.unit());
