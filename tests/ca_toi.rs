@@ -85,13 +85,6 @@ impl Tally {
     }
 }
 
-fn mesh_ref(m: &TriMesh<f64>) -> MeshRef<'_> {
-    MeshRef {
-        vertices: m.vertices(),
-        triangles: m.triangles(),
-    }
-}
-
 /// `orientations` randomly rotated copies of `mesh` with their trees.
 fn oriented(
     mesh: &TriMesh<f64>,
@@ -124,8 +117,14 @@ fn run_meshes(scene: &str, a: &TriMesh<f64>, b: &TriMesh<f64>, spin: f64, n: usi
             .with_bound(bound);
         let report =
             time_of_impact(&mut MeshPair::new(ta, tb), &q.a, &q.b, &params).expect("valid query");
-        let truth =
-            first_sampled_contact(mesh_ref(ma), &q.a, mesh_ref(mb), &q.b, (0.0, 1.0), SAMPLES);
+        let truth = first_sampled_contact(
+            MeshRef::from(ma),
+            &q.a,
+            MeshRef::from(mb),
+            &q.b,
+            (0.0, 1.0),
+            SAMPLES,
+        );
         tally.record(&format!("{scene} query {k} ({bound:?})"), &report, truth);
     }
     tally.assert_clean(scene);
@@ -181,8 +180,14 @@ fn convex_solids_through_gjk_are_never_late_and_never_missed() {
             .with_bound(bound);
         let report = time_of_impact(&mut ConvexPair::with_gjk(va, vb), &q.a, &q.b, &params)
             .expect("valid query");
-        let truth =
-            first_sampled_contact(mesh_ref(&a), &q.a, mesh_ref(&b), &q.b, (0.0, 1.0), SAMPLES);
+        let truth = first_sampled_contact(
+            MeshRef::from(&a),
+            &q.a,
+            MeshRef::from(&b),
+            &q.b,
+            (0.0, 1.0),
+            SAMPLES,
+        );
         tally.record(&format!("convex query {k} ({bound:?})"), &report, truth);
     }
     tally.assert_clean("convex (GJK)");
@@ -235,9 +240,9 @@ fn f32_meshes_are_never_late_and_never_missed() {
         let report =
             time_of_impact(&mut MeshPair::new(ta, tb), &a32, &b32, &params).expect("valid");
         let truth = first_sampled_contact(
-            mesh_ref(ma),
+            MeshRef::from(ma),
             &to64(&a32),
-            mesh_ref(mb),
+            MeshRef::from(mb),
             &to64(&b32),
             (0.0, 1.0),
             SAMPLES,

@@ -24,6 +24,15 @@ pub struct MeshRef<'a> {
     pub triangles: &'a [[u32; 3]],
 }
 
+impl<'a> From<&'a crate::TriMesh<f64>> for MeshRef<'a> {
+    fn from(m: &'a crate::TriMesh<f64>) -> Self {
+        Self {
+            vertices: m.vertices(),
+            triangles: m.triangles(),
+        }
+    }
+}
+
 /// Places `r` at time `t`: `x0 + v t + q r q^-1` with `q` the unit
 /// quaternion of the rotation by `|w| t` about `w/|w|`.
 #[must_use]

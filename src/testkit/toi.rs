@@ -5,26 +5,18 @@
 extern crate std;
 use std::vec::Vec;
 
+use super::SplitMix64;
 use crate::{Float, RigidMotion, TriMesh, Vec3};
 
-/// SplitMix64: a tiny, fast, deterministic random source (no dependency).
-#[derive(Clone, Debug)]
-pub struct Rng(u64);
+/// The deterministic random source of the time-of-impact generators: the
+/// testkit's [`SplitMix64`], with the draws they need.
+pub type Rng = SplitMix64;
 
-impl Rng {
+impl SplitMix64 {
     /// A source seeded with `seed`.
     #[must_use]
     pub const fn new(seed: u64) -> Self {
         Self(seed)
-    }
-
-    /// The next 64 random bits.
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
     }
 
     /// Uniform in `[0, 1)`.
@@ -37,10 +29,10 @@ impl Rng {
         lo + (hi - lo) * self.unit()
     }
 
-    /// A uniformly distributed unit vector.
+    /// A uniformly distributed unit vector (rejection from the cube).
     pub fn direction(&mut self) -> [f64; 3] {
         loop {
-            let v = [0, 1, 2].map(|_| self.range(-1.0, 1.0));
+            let v = self.vec3();
             let l2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
             if l2 > 1e-6 && l2 <= 1.0 {
                 let l = l2.sqrt();
