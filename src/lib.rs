@@ -111,6 +111,7 @@ mod interval;
 mod motion;
 mod nevq;
 mod point;
+mod pose;
 mod rotation;
 mod rounding;
 mod vec3;
@@ -134,6 +135,7 @@ pub use motion::RigidMotion;
 pub use nevq::nevq_speed_unmargined;
 pub use nevq::{nevq, nevq_speed};
 pub use point::{BodyPoint, Point3};
+pub use pose::Pose;
 pub use rotation::{rotate_about_axis, RotationPlane};
 pub use vec3::Vec3;
 
