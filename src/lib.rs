@@ -107,6 +107,7 @@ mod error;
 mod evq;
 mod features;
 mod float;
+mod geometry;
 mod interval;
 mod motion;
 mod nevq;
@@ -129,6 +130,7 @@ pub use error::{InputError, Quantity};
 pub use evq::evq_speed_unmargined;
 pub use evq::{evq, evq_speed};
 pub use float::Float;
+pub use geometry::closest::{point_triangle, segment_segment, triangle_triangle, ClosestPoints};
 pub use interval::TimeInterval;
 pub use motion::RigidMotion;
 #[cfg(feature = "testkit")]
