@@ -73,6 +73,29 @@
 //! * **Bad input** gets a typed [`InputError`] at construction; evaluation
 //!   never panics and never returns NaN; `+inf` (sound) only on overflow.
 //!
+//! ## Distances
+//!
+//! A CA step needs the distance `d` and the direction `n` as well as the
+//! bound `mu`. [`triangle_triangle`] (with [`point_triangle`] and
+//! [`segment_segment`]) gives the exact Euclidean distance of two triangles
+//! with witness points, and [`gjk_distance`] the distance of two convex
+//! bodies given by a [`SupportMap`], such as a [`ConvexPolytope`] placed by a
+//! [`Pose`]. GJK's `distance` may over-estimate (by about its relative
+//! tolerance when converged); its `lower_bound` is certified, with the
+//! rounding of the support maps accounted for, and holds along its
+//! `direction`: use that pair for a step. See [`GjkResult`].
+//!
+//! ```
+//! use motion_bound::{gjk_distance, ConvexPolytope, GjkParams, Pose, Vec3};
+//! let tet = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+//! let a = ConvexPolytope::try_new(&tet, Pose::IDENTITY)?;
+//! let b = a.with_pose(Pose::from_translation(Vec3::new(0.0, 0.0, 2.5)))?;
+//! let r = gjk_distance(&a, &b, &GjkParams::default());
+//! assert!(r.lower_bound <= 1.5 && r.lower_bound > 1.5 - 1e-12);
+//! assert_eq!(r.direction, Some(Vec3::new(0.0, 0.0, 1.0)));
+//! # Ok::<(), motion_bound::InputError>(())
+//! ```
+//!
 //! ## Precision
 //!
 //! Both `f32` (what game engines use) and `f64` are supported through one
@@ -131,6 +154,7 @@ pub use evq::evq_speed_unmargined;
 pub use evq::{evq, evq_speed};
 pub use float::Float;
 pub use geometry::closest::{point_triangle, segment_segment, triangle_triangle, ClosestPoints};
+pub use geometry::gjk::{gjk_distance, ConvexPolytope, GjkParams, GjkResult, SupportMap};
 pub use interval::TimeInterval;
 pub use motion::RigidMotion;
 #[cfg(feature = "testkit")]
