@@ -113,7 +113,7 @@
 //! | `approx` | no | `approx` comparison traits on the public vector types |
 //! | `reference` | no | the exact closed-form oracle ([`reference`](mod@reference)) |
 //! | `faer` | no | batched dense sampling of the oracle with faer ([`reference::sampled`]) |
-//! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks |
+//! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks, and an exact triangle intersection test (exact predicates from `robust`) |
 //! | `arbitrary` | no | `Arbitrary` case descriptions for `cargo fuzz` |
 
 #![cfg_attr(not(feature = "std"), no_std)]
