@@ -14,7 +14,6 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 #[path = "../tests/common/meshes.rs"]
-#[allow(dead_code, unreachable_pub)]
 mod meshes;
 
 use motion_bound::ca::{time_of_impact, BoundChoice, CaParams, MeshPair};

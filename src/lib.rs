@@ -80,6 +80,28 @@
 //! that it is closed and outward-wound, reads and writes OFF (and OBJ with the
 //! `obj` feature), and hands its vertices to the bounds as a [`VertexSet`];
 //! the `scenes` module builds the seed's torus knots and other test bodies.
+//! ## Distances
+//!
+//! A CA step needs the distance `d` and the direction `n` as well as the
+//! bound `mu`. [`triangle_triangle`] (with [`point_triangle`] and
+//! [`segment_segment`]) gives the exact Euclidean distance of two triangles
+//! with witness points, and [`gjk_distance`] the distance of two convex
+//! bodies given by a [`SupportMap`], such as a [`ConvexPolytope`] placed by a
+//! [`Pose`]. GJK's `distance` may over-estimate (by about its relative
+//! tolerance when converged); its `lower_bound` is certified, with the
+//! rounding of the support maps accounted for, and holds along its
+//! `direction`: use that pair for a step. See [`GjkResult`].
+//!
+//! ```
+//! use motion_bound::{gjk_distance, ConvexPolytope, GjkParams, Pose, Vec3};
+//! let tet = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+//! let a = ConvexPolytope::try_new(&tet, Pose::IDENTITY)?;
+//! let b = a.with_pose(Pose::from_translation(Vec3::new(0.0, 0.0, 2.5)))?;
+//! let r = gjk_distance(&a, &b, &GjkParams::default());
+//! assert!(r.lower_bound <= 1.5 && r.lower_bound > 1.5 - 1e-12);
+//! assert_eq!(r.direction, Some(Vec3::new(0.0, 0.0, 1.0)));
+//! # Ok::<(), motion_bound::InputError>(())
+//! ```
 //!
 //! ## Precision
 //!
@@ -100,7 +122,7 @@
 //! | `approx` | no | `approx` comparison traits on the public vector types |
 //! | `reference` | no | the exact closed-form oracle ([`reference`](mod@reference)) |
 //! | `faer` | no | batched dense sampling of the oracle with faer ([`reference::sampled`]) |
-//! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks (implies `alloc`) |
+//! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks, the time-of-impact ground truth, and an exact triangle intersection test (exact predicates from `robust`); implies `alloc` |
 //! | `arbitrary` | no | `Arbitrary` case descriptions for `cargo fuzz` |
 
 #![cfg_attr(not(feature = "std"), no_std)]

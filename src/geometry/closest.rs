@@ -22,6 +22,13 @@ use crate::{Float, Vec3};
 /// `on_a` lies on the first set and `on_b` on the second (up to rounding),
 /// and `distance` is `|on_b - on_a|` as computed by [`Vec3::length`]. When
 /// the sets meet, `distance` is 0 and `on_a == on_b` is a common point.
+///
+/// The distance is well conditioned; the witnesses need not be. When the
+/// minimum is flat (a vertex against an edge almost orthogonal to the
+/// closest direction, or parallel edges and faces), pairs far apart along
+/// the flat part have distances within rounding of each other, and which
+/// one is returned is decided by rounding. So is the direction
+/// `on_b - on_a` derived from them.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ClosestPoints<T> {
     /// The Euclidean distance between the sets, `|on_b - on_a|`.
@@ -37,7 +44,7 @@ impl<T: Float> ClosestPoints<T> {
     /// distance, witnesses the first point of each set.
     fn non_finite(on_a: Vec3<T>, on_b: Vec3<T>) -> Self {
         Self {
-            distance: T::INFINITY - T::INFINITY,
+            distance: nan(),
             on_a,
             on_b,
         }
@@ -234,7 +241,7 @@ struct Best<T> {
 impl<T: Float> Best<T> {
     fn new() -> Self {
         Self {
-            d2: T::INFINITY - T::INFINITY, // NaN: replaced by the first candidate
+            d2: nan(), // replaced by the first candidate
             on_a: Vec3::ZERO,
             on_b: Vec3::ZERO,
         }
@@ -248,6 +255,11 @@ impl<T: Float> Best<T> {
             self.on_b = y;
         }
     }
+}
+
+/// A quiet NaN (`0 * inf`; the sealed `Float` has no NaN constant).
+fn nan<T: Float>() -> T {
+    T::ZERO * T::INFINITY
 }
 
 /// The closest point to `p` on segment `[a, b]` (`a` when it has zero length).
@@ -300,9 +312,11 @@ fn closest_on_triangle<T: Float>(p: Vec3<T>, a: Vec3<T>, b: Vec3<T>, c: Vec3<T>)
         return b; // vertex region B
     }
     let vc = d1 * d4 - d3 * d2;
-    if vc <= zero && d1 >= zero && d3 <= zero {
-        let den = d1 - d3;
-        return if den > zero { a + ab * (d1 / den) } else { a }; // edge AB
+    // Edge regions. A zero-length edge passes its region test vacuously, so
+    // it is skipped (the face-region fallback below tries every edge).
+    let den = d1 - d3;
+    if vc <= zero && d1 >= zero && d3 <= zero && den > zero {
+        return a + ab * (d1 / den); // edge AB
     }
     let cp = p - c;
     let (d5, d6) = (ab.dot(cp), ac.dot(cp));
@@ -310,19 +324,15 @@ fn closest_on_triangle<T: Float>(p: Vec3<T>, a: Vec3<T>, b: Vec3<T>, c: Vec3<T>)
         return c; // vertex region C
     }
     let vb = d5 * d2 - d1 * d6;
-    if vb <= zero && d2 >= zero && d6 <= zero {
-        let den = d2 - d6;
-        return if den > zero { a + ac * (d2 / den) } else { a }; // edge AC
+    let den = d2 - d6;
+    if vb <= zero && d2 >= zero && d6 <= zero && den > zero {
+        return a + ac * (d2 / den); // edge AC
     }
     let va = d3 * d6 - d5 * d4;
     let (e1, e2) = (d4 - d3, d5 - d6);
-    if va <= zero && e1 >= zero && e2 >= zero {
-        let den = e1 + e2;
-        return if den > zero {
-            b + (c - b) * (e1 / den)
-        } else {
-            b
-        }; // edge BC
+    let den = e1 + e2;
+    if va <= zero && e1 >= zero && e2 >= zero && den > zero {
+        return b + (c - b) * (e1 / den); // edge BC
     }
     // Face region (or a degenerate triangle whose tests all failed).
     let mut best = Best::new();
@@ -461,6 +471,13 @@ mod tests {
             );
             assert_eq!(c.distance, (q - p).length(), "{p:?}: distance");
         }
+        // Found by the property test: a zero-length edge AB passed its
+        // region test vacuously and the vertex A came back.
+        let c = point_triangle(
+            v(0.0, 0.0, 0.0),
+            [v(0.0, 1.0, 0.0), v(0.0, 1.0, 0.0), v(0.0, 0.0, 0.0)],
+        );
+        assert_eq!(c.distance, 0.0, "repeated vertex: {c:?}");
         let single = [v(1.0, 2.0, 3.0); 3];
         assert_eq!(
             point_triangle(v(1.0, 2.0, 5.0), single).distance,

@@ -482,7 +482,7 @@ mod tests {
         assert_eq!(r.distance, 4.0, "two points");
         assert!(r.converged && !r.intersecting, "converged");
         assert!(
-            r.lower_bound <= 4.0 && r.lower_bound > 4.0 - 1e-13,
+            r.lower_bound <= 4.0 && r.lower_bound > 4.0 - 1e-12,
             "bound {}",
             r.lower_bound
         );

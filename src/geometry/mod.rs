@@ -7,6 +7,10 @@
 //! convex polytopes. Everything is `no_std`, allocation-free and generic over
 //! [`Float`](crate::Float).
 
+// `!(x > 0)` is written on purpose throughout: unlike `x <= 0` it is true
+// for NaN, which must take the degenerate branch.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 pub(crate) mod closest;
 #[cfg(feature = "testkit")]
 pub(crate) mod exact;

@@ -161,14 +161,10 @@ fn s3d<T: Float>(w: &[Vec3<T>]) -> Nearest<T> {
         };
     }
     let mut best = None;
-    for j in 0..4 {
-        if !same_sign(det, c[j]) {
-            let mut face = [0; 3];
-            let mut f = 0;
-            for i in (0..4).filter(|&i| i != j) {
-                face[f] = i;
-                f += 1;
-            }
+    for (j, &cj) in c.iter().enumerate() {
+        if !same_sign(det, cj) {
+            // The face opposite vertex j, in cyclic order.
+            let face = [(j + 1) % 4, (j + 2) % 4, (j + 3) % 4];
             best = nearer(best, s2d(w, face));
         }
     }
