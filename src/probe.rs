@@ -94,6 +94,7 @@ impl<T: Float> DirectedProbe<T> {
     }
 
     /// NEVQ for points within `r_hat` of the rotation centre.
+    #[cfg(feature = "alloc")]
     #[inline]
     pub(crate) fn nevq_speed_radius(&self, r_hat: T) -> T {
         nevq_speed_from(&self.p, r_hat)

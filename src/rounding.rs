@@ -28,6 +28,7 @@ pub(crate) fn radius_up<T: Float>(max_sq: T) -> T {
 /// points `v_i`, from `max_sq = max_i fl(|fl(v_i - s)|^2)`: the subtraction
 /// errs by at most `u |v_i - s|` per component, so `|v_i - s| <= |fl(v_i - s)| / (1 - u)`,
 /// covered by the extra factor: `radius_up(max_sq) (1 + gamma_2)`.
+#[cfg(feature = "alloc")]
 #[inline]
 #[must_use]
 pub(crate) fn offset_radius_up<T: Float>(max_sq: T) -> T {
@@ -125,6 +126,7 @@ pub(crate) fn pose_error_up<T: Float>(angle: T, radius: T, centre_reach: T) -> T
 /// of a body-frame box of half extents `h` placed by the computed rotation,
 /// from the computed `supp^ = fl(sum_k h_k |fl(R^T n)_k|)`:
 /// `supp^ (1 + gamma_4) + pose_error_up(angle, |h|_1, 0) + gamma_8 |h|_1`.
+#[cfg(feature = "alloc")]
 #[inline]
 #[must_use]
 pub(crate) fn box_support_up<T: Float>(supp: T, half_l1: T, angle: T) -> T {

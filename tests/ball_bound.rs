@@ -140,7 +140,7 @@ fn evq_ball_is_never_above_nevq_ball() {
         probe.ball_speed(&ball, BoundKind::Evq),
         probe.ball_speed(&ball, BoundKind::Nevq),
     );
-    assert!(e >= 1.5 && e < 1.5 * (1.0 + 1e-12), "rim only: {e}");
+    assert!((1.5..1.5 * (1.0 + 1e-12)).contains(&e), "rim only: {e}");
     assert!(
         n >= 3.0 * 5.5 * (1.0 - 1e-15) && e <= n,
         "NEVQ uses |s| + rho: {n}"
