@@ -217,81 +217,8 @@ mod tests {
 
     #[test]
     fn hand_made_cases() {
-        let base = [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]];
-        let cases: [(&str, [[f64; 3]; 3], bool); 16] = [
-            (
-                "piercing",
-                [[0.5, 0.5, -1.0], [0.5, 0.5, 1.0], [3.0, 3.0, 0.5]],
-                true,
-            ),
-            (
-                "above",
-                [[0.5, 0.5, 0.1], [0.6, 0.5, 1.0], [3.0, 3.0, 0.5]],
-                false,
-            ),
-            (
-                "shared vertex",
-                [[0.0, 0.0, 0.0], [-1.0, 0.0, 1.0], [0.0, -1.0, 1.0]],
-                true,
-            ),
-            (
-                "shared edge",
-                [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [1.0, -1.0, 1.0]],
-                true,
-            ),
-            (
-                "vertex on face",
-                [[0.5, 0.5, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 1.0]],
-                true,
-            ),
-            (
-                "vertex on edge",
-                [[1.0, 0.0, 0.0], [1.0, -1.0, 1.0], [2.0, -1.0, 1.0]],
-                true,
-            ),
-            (
-                "standing outside",
-                [[3.0, 3.0, 0.0], [0.5, 0.5, 1.0], [0.6, 0.4, 1.0]],
-                false,
-            ),
-            (
-                "coplanar overlap",
-                [[1.0, 1.0, 0.0], [3.0, 1.0, 0.0], [1.0, 3.0, 0.0]],
-                true,
-            ),
-            (
-                "coplanar inside",
-                [[0.1, 0.1, 0.0], [0.5, 0.1, 0.0], [0.1, 0.5, 0.0]],
-                true,
-            ),
-            (
-                "coplanar apart",
-                [[1.5, 1.5, 0.0], [3.0, 1.5, 0.0], [1.5, 3.0, 0.0]],
-                false,
-            ),
-            (
-                "coplanar touching",
-                [[1.0, 1.0, 0.0], [3.0, 1.0, 0.0], [1.0, 3.0, 0.0]],
-                true,
-            ),
-            (
-                "linked",
-                [[1.0, 0.5, -2.0], [1.0, 0.5, 2.0], [1.0, -3.0, 0.0]],
-                true,
-            ),
-            (
-                "segment through face",
-                [[0.5, 0.5, -1.0], [0.5, 0.5, 0.0], [0.5, 0.5, 1.0]],
-                true,
-            ),
-            (
-                "segment in plane, outside",
-                [[3.0, 0.0, 0.0], [4.0, 0.0, 0.0], [5.0, 0.0, 0.0]],
-                false,
-            ),
-            ("point in face", [[0.5, 0.5, 0.0]; 3], true),
-            ("point off face", [[0.5, 0.5, 0.5]; 3], false),
-        ];
+        let base = super::super::HAND_MADE_BASE;
+        let cases = super::super::HAND_MADE_CASES;
         for (name, b, expect) in cases {
             assert_eq!(meet(&base, &b), expect, "{name}");
             assert_eq!(meet(&b, &base), expect, "{name} (swapped)");

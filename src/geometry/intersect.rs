@@ -187,70 +187,8 @@ mod tests {
 
     #[test]
     fn hand_made_cases() {
-        let base = tri([[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]]);
-        let cases: [(&str, [[f64; 3]; 3], bool); 13] = [
-            (
-                "standing outside on the plane",
-                [[3.0, 3.0, 0.0], [0.5, 0.5, 1.0], [0.6, 0.4, 1.0]],
-                false,
-            ),
-            (
-                "piercing",
-                [[0.5, 0.5, -1.0], [0.5, 0.5, 1.0], [3.0, 3.0, 0.5]],
-                true,
-            ),
-            (
-                "above",
-                [[0.5, 0.5, 0.1], [0.6, 0.5, 1.0], [3.0, 3.0, 0.5]],
-                false,
-            ),
-            (
-                "shared vertex",
-                [[0.0, 0.0, 0.0], [-1.0, 0.0, 1.0], [0.0, -1.0, 1.0]],
-                true,
-            ),
-            (
-                "shared edge, other plane",
-                [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [1.0, -1.0, 1.0]],
-                true,
-            ),
-            (
-                "vertex on face",
-                [[0.5, 0.5, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 1.0]],
-                true,
-            ),
-            (
-                "vertex on edge",
-                [[1.0, 0.0, 0.0], [1.0, -1.0, 1.0], [2.0, -1.0, 1.0]],
-                true,
-            ),
-            (
-                "coplanar overlap",
-                [[1.0, 1.0, 0.0], [3.0, 1.0, 0.0], [1.0, 3.0, 0.0]],
-                true,
-            ),
-            (
-                "coplanar inside",
-                [[0.1, 0.1, 0.0], [0.5, 0.1, 0.0], [0.1, 0.5, 0.0]],
-                true,
-            ),
-            (
-                "coplanar apart",
-                [[1.5, 1.5, 0.0], [3.0, 1.5, 0.0], [1.5, 3.0, 0.0]],
-                false,
-            ),
-            (
-                "coplanar touching vertex",
-                [[1.0, 1.0, 0.0], [3.0, 1.0, 0.0], [1.0, 3.0, 0.0]],
-                true,
-            ),
-            (
-                "degenerate segment through face",
-                [[0.5, 0.5, -1.0], [0.5, 0.5, 0.0], [0.5, 0.5, 1.0]],
-                true,
-            ),
-            ("point off face", [[0.5, 0.5, 0.5]; 3], false),
-        ];
+        let base = tri(super::super::HAND_MADE_BASE);
+        let cases = super::super::HAND_MADE_CASES;
         for (name, b, expect) in cases {
             assert_eq!(triangles_meet(&base, &tri(b)), expect, "{name}");
             assert_eq!(triangles_meet(&tri(b), &base), expect, "{name} (swapped)");
