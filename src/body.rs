@@ -68,20 +68,30 @@ impl<'a, T: Float> VertexSet<'a, T> {
         if vertices.is_empty() {
             return Err(InputError::EmptyVertexSet);
         }
-        let mut max_sq = T::ZERO;
         for (i, r) in vertices.iter().enumerate() {
             check_components(*r, Quantity::Vertex(i))?;
+        }
+        Ok(Self::from_validated(vertices))
+    }
+
+    /// The set of vertices that the caller has already validated as
+    /// [`try_new`](Self::try_new) does (non-empty, finite, within
+    /// [`Float::MAX_INPUT`]); a validated `TriMesh` builds its set with this.
+    #[must_use]
+    pub(crate) fn from_validated(vertices: &'a [[T; 3]]) -> Self {
+        let mut max_sq = T::ZERO;
+        for r in vertices {
             let sq = r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
             if sq > max_sq {
                 max_sq = sq;
             }
         }
-        Ok(Self {
+        Self {
             vertices,
             summary: BodySummary {
                 max_radius: radius_up(max_sq),
             },
-        })
+        }
     }
 
     /// The summary (the rounded-up largest radius).

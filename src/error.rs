@@ -20,6 +20,8 @@ pub enum Quantity {
     Vertex(usize),
     /// A radius given directly (a bounding sphere).
     Radius,
+    /// A rigid placement (rotation matrix or translation).
+    Pose,
 }
 
 /// Why an input was rejected.
@@ -57,6 +59,7 @@ impl fmt::Display for Quantity {
             Self::Time => f.write_str("time"),
             Self::Vertex(i) => write!(f, "vertex {i}"),
             Self::Radius => f.write_str("radius"),
+            Self::Pose => f.write_str("pose"),
         }
     }
 }

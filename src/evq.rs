@@ -20,10 +20,7 @@
 //! The seed's printed Eq. 2 has these two cases swapped, drops the absolute
 //! value and has no case for sweeps of pi or more; see the proof.
 
-use crate::bound::Projection;
-use crate::nevq::nevq_speed_from;
-use crate::rounding::{assemble, evq_rotational_up};
-use crate::{DirectedBound, Direction, Float, RigidMotion, Vec3, VertexSet};
+use crate::{DirectedBound, Direction, Float, PreparedMotion, RigidMotion, Vec3, VertexSet};
 
 /// The EVQ bound: `|v.n| + max_i max_{t in [t_a, t_b]} |c(t) . r_i^c|`,
 /// rounded up and never above [`nevq`](crate::nevq).
@@ -64,16 +61,7 @@ pub fn evq<T: Float>(
 /// The EVQ speed bound alone (see [`evq`]).
 #[must_use]
 pub fn evq_speed<T: Float>(body: &VertexSet<'_, T>, motion: &RigidMotion<T>, n: Direction<T>) -> T {
-    let p = Projection::new(motion, n);
-    let r_hat = body.summary().max_radius();
-    let nevq = nevq_speed_from(&p, r_hat);
-    match extremal(body, motion, &p, r_hat * r_hat) {
-        None => nevq,
-        Some(Extremal { e_sq, theta_m }) => {
-            let rot = evq_rotational_up(p.c_norm, e_sq.sqrt(), theta_m, p.w_l1, r_hat);
-            assemble(p.linear_up(), rot).min_nan(nevq)
-        }
-    }
+    PreparedMotion::new(motion).probe(n).evq_speed(body)
 }
 
 /// The EVQ speed in plain floating point, without any rounding margin:
@@ -86,56 +74,22 @@ pub fn evq_speed_unmargined<T: Float>(
     motion: &RigidMotion<T>,
     n: Direction<T>,
 ) -> T {
-    let p = Projection::new(motion, n);
-    let r_hat = body.summary().max_radius();
-    let e = match extremal(body, motion, &p, T::INFINITY) {
-        None => r_hat,
-        Some(x) => x.e_sq.sqrt(),
+    let probe = PreparedMotion::new(motion).probe(n);
+    let e = match probe.extremal_sq(body.vertices(), T::INFINITY) {
+        None => body.summary().max_radius(),
+        Some(e_sq) => e_sq.sqrt(),
     };
-    p.a.abs() + p.c_norm * e
-}
-
-/// The computed extremal value `E^^2 = max_i max_arc (u(theta) . q_i)^2` and
-/// the largest `|theta|` at the interval's ends.
-struct Extremal<T> {
-    e_sq: T,
-    theta_m: T,
-}
-
-/// `None` when the EVQ term cannot beat NEVQ (or is not trusted): no rotation,
-/// a tiny `c`, or a vertex reaching `stop_sq`.
-#[inline]
-fn extremal<T: Float>(
-    body: &VertexSet<'_, T>,
-    motion: &RigidMotion<T>,
-    p: &Projection<T>,
-    stop_sq: T,
-) -> Option<Extremal<T>> {
-    let omega = motion.angular_speed();
-    if p.c_norm <= T::TINY_LENGTH || omega <= T::TINY_LENGTH {
-        return None;
-    }
-    let iv = motion.interval();
-    let theta_a = omega * iv.start();
-    let theta_b = omega * iv.end();
-    let theta_m = theta_a.abs().max_nan(theta_b.abs());
-    let axis = motion.axis();
-    let e_sq = if theta_b - theta_a >= T::PI {
-        full_turn_scan(body.vertices(), axis, stop_sq)?
-    } else {
-        let e1 = Vec3::new(p.c.x / p.c_norm, p.c.y / p.c_norm, p.c.z / p.c_norm);
-        let e2 = axis.cross(e1);
-        let ua = (theta_a.cos(), -theta_a.sin());
-        let ub = (theta_b.cos(), -theta_b.sin());
-        arc_scan(body.vertices(), e1, e2, ua, ub, stop_sq)?
-    };
-    Some(Extremal { e_sq, theta_m })
+    probe.linear_raw() + probe.c_norm() * e
 }
 
 /// Sweep of pi or more: `c(t)` meets the line through every `r_i^c`, so each
 /// vertex contributes its squared distance from the axis, `|w^ x r_i|^2`.
 #[inline]
-fn full_turn_scan<T: Float>(vertices: &[[T; 3]], axis: Vec3<T>, stop_sq: T) -> Option<T> {
+pub(crate) fn full_turn_scan<T: Float>(
+    vertices: &[[T; 3]],
+    axis: Vec3<T>,
+    stop_sq: T,
+) -> Option<T> {
     let mut best = T::ZERO;
     for r in vertices {
         let v2 = axis.cross(Vec3::from_array(*r)).length_squared();
@@ -153,7 +107,7 @@ fn full_turn_scan<T: Float>(vertices: &[[T; 3]], axis: Vec3<T>, stop_sq: T) -> O
 /// `u = (cos theta, -sin theta)` are the unit directions of `c(t_a)`, `c(t_b)`
 /// in the basis `(e1, e2)`; `f = u . q` and `g = u x q` for `q = (x, y)`.
 #[inline]
-fn arc_scan<T: Float>(
+pub(crate) fn arc_scan<T: Float>(
     vertices: &[[T; 3]],
     e1: Vec3<T>,
     e2: Vec3<T>,

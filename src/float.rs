@@ -94,6 +94,9 @@ pub trait Float:
     fn is_finite(self) -> bool;
     /// `true` for NaN.
     fn is_nan(self) -> bool;
+    /// The largest representable value below `self` (IEEE `nextDown`; NaN
+    /// stays NaN, `-inf` stays `-inf`).
+    fn next_down(self) -> Self;
 
     /// The larger of two numbers; NaN if either is NaN (unlike `f64::max`,
     /// which would silently drop a NaN and could hide an unsound value).
@@ -162,6 +165,10 @@ macro_rules! impl_float {
             #[inline]
             fn is_nan(self) -> bool {
                 $t::is_nan(self)
+            }
+            #[inline]
+            fn next_down(self) -> Self {
+                $t::next_down(self)
             }
 
             #[cfg(feature = "std")]

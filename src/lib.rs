@@ -73,6 +73,36 @@
 //! * **Bad input** gets a typed [`InputError`] at construction; evaluation
 //!   never panics and never returns NaN; `+inf` (sound) only on overflow.
 //!
+//! ## Meshes
+//!
+//! With the `alloc` feature, `TriMesh` owns a validated triangle mesh (the
+//! body points of a non-convex body, offsets from its rotation centre), checks
+//! that it is closed and outward-wound, reads and writes OFF (and OBJ with the
+//! `obj` feature), and hands its vertices to the bounds as a [`VertexSet`];
+//! the `scenes` module builds the seed's torus knots and other test bodies.
+//! ## Distances
+//!
+//! A CA step needs the distance `d` and the direction `n` as well as the
+//! bound `mu`. [`triangle_triangle`] (with [`point_triangle`] and
+//! [`segment_segment`]) gives the exact Euclidean distance of two triangles
+//! with witness points, and [`gjk_distance`] the distance of two convex
+//! bodies given by a [`SupportMap`], such as a [`ConvexPolytope`] placed by a
+//! [`Pose`]. GJK's `distance` may over-estimate (by about its relative
+//! tolerance when converged); its `lower_bound` is certified, with the
+//! rounding of the support maps accounted for, and holds along its
+//! `direction`: use that pair for a step. See [`GjkResult`].
+//!
+//! ```
+//! use motion_bound::{gjk_distance, ConvexPolytope, GjkParams, Pose, Vec3};
+//! let tet = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+//! let a = ConvexPolytope::try_new(&tet, Pose::IDENTITY)?;
+//! let b = a.with_pose(Pose::from_translation(Vec3::new(0.0, 0.0, 2.5)))?;
+//! let r = gjk_distance(&a, &b, &GjkParams::default());
+//! assert!(r.lower_bound <= 1.5 && r.lower_bound > 1.5 - 1e-12);
+//! assert_eq!(r.direction, Some(Vec3::new(0.0, 0.0, 1.0)));
+//! # Ok::<(), motion_bound::InputError>(())
+//! ```
+//!
 //! ## Precision
 //!
 //! Both `f32` (what game engines use) and `f64` are supported through one
@@ -85,55 +115,84 @@
 //! | feature | default | what it adds |
 //! |---|---|---|
 //! | `std` | yes | float functions from `std` |
-//! | `libm` | no | float functions from `libm`; with `std` off the crate is `#![no_std]` and allocation-free |
+//! | `libm` | no | float functions from `libm`; with `std` off the crate is `#![no_std]` (and allocation-free unless `alloc` is on) |
+//! | `alloc` | no | owned meshes (`TriMesh`), OFF input and output, the `scenes` generators; needs no `std` |
+//! | `obj` | no | OBJ input with `tobj` (`TriMesh::from_obj_str`); implies `std` and `alloc` |
 //! | `mint` | no | conversions to and from `mint` vectors (glam, nalgebra, cgmath interop) |
 //! | `approx` | no | `approx` comparison traits on the public vector types |
 //! | `reference` | no | the exact closed-form oracle ([`reference`](mod@reference)) |
 //! | `faer` | no | batched dense sampling of the oracle with faer ([`reference::sampled`]) |
-//! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks |
+//! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks, the time-of-impact ground truth, and an exact triangle intersection test (exact predicates from `robust`); implies `alloc` |
 //! | `arbitrary` | no | `Arbitrary` case descriptions for `cargo fuzz` |
 
 #![cfg_attr(not(feature = "std"), no_std)]
 #![forbid(unsafe_code)]
 #![warn(missing_docs, unreachable_pub, clippy::missing_assert_message)]
 
+#[cfg(feature = "alloc")]
+extern crate alloc;
+
 #[cfg(not(any(feature = "std", feature = "libm")))]
 compile_error!("motion-bound needs either the `std` or the `libm` feature for its float functions");
 
+mod arc;
+mod ball;
 mod body;
 mod bound;
+#[cfg(feature = "alloc")]
+mod bvh;
+pub mod ca;
 mod direction;
 mod error;
 mod evq;
 mod features;
 mod float;
+mod geometry;
 mod interval;
+#[cfg(feature = "alloc")]
+mod mesh;
 mod motion;
 mod nevq;
 mod point;
+mod pose;
+mod probe;
 mod rotation;
 mod rounding;
 mod vec3;
 
 #[cfg(feature = "reference")]
 pub mod reference;
+#[cfg(feature = "alloc")]
+pub mod scenes;
 #[cfg(feature = "testkit")]
 pub mod testkit;
 
+pub use arc::{PreparedMotion, SweptArc};
+pub use ball::BoundingBall;
 pub use body::{BodySummary, VertexSet};
 pub use bound::{directed_bound, BoundKind, DirectedBound};
+#[cfg(feature = "alloc")]
+pub use bvh::BallTree;
 pub use direction::Direction;
 pub use error::{InputError, Quantity};
 #[cfg(feature = "testkit")]
 pub use evq::evq_speed_unmargined;
 pub use evq::{evq, evq_speed};
 pub use float::Float;
+pub use geometry::closest::{point_triangle, segment_segment, triangle_triangle, ClosestPoints};
+pub use geometry::gjk::{gjk_distance, ConvexPolytope, GjkParams, GjkResult, SupportMap};
 pub use interval::TimeInterval;
+#[cfg(feature = "obj")]
+pub use mesh::ObjError;
+#[cfg(feature = "alloc")]
+pub use mesh::{EdgeReport, MeshError, OffError, OffErrorKind, TriMesh};
 pub use motion::RigidMotion;
 #[cfg(feature = "testkit")]
 pub use nevq::nevq_speed_unmargined;
 pub use nevq::{nevq, nevq_speed};
 pub use point::{BodyPoint, Point3};
+pub use pose::Pose;
+pub use probe::DirectedProbe;
 pub use rotation::{rotate_about_axis, RotationPlane};
 pub use vec3::Vec3;
 

@@ -2,7 +2,7 @@
 
 use crate::error::{check_components, InputError, Quantity};
 use crate::rotation::rotate_about_axis;
-use crate::{BodyPoint, Direction, Float, Point3, TimeInterval, Vec3};
+use crate::{BodyPoint, Direction, Float, Point3, Pose, TimeInterval, Vec3};
 
 /// A rigid motion with constant linear velocity `v` of the rotation centre and
 /// constant angular velocity `w` about it, considered over a time interval.
@@ -186,6 +186,53 @@ impl<T: Float> RigidMotion<T> {
     #[must_use]
     pub fn point_at(&self, r: BodyPoint<T>, t: T) -> Point3<T> {
         self.centre_at(t) + self.arm_at(r, t)
+    }
+
+    /// The pose at time `t`: `p(t) = pose.transform_point(r)` for every body
+    /// point `r`, with the rotation matrix `R(t)` built once by Rodrigues'
+    /// formula `R = cos(a) I + sin(a) [k]x + (1 - cos(a)) k k^T`, `a = |w| t`.
+    ///
+    /// ```
+    /// use motion_bound::{BodyPoint, RigidMotion, Vec3};
+    /// let m = RigidMotion::try_from_arrays([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.5]).unwrap();
+    /// let r = BodyPoint::new(0.3, -0.2, 0.7);
+    /// let (a, b) = (m.pose_at(0.8).transform_point(r.arm()), m.point_at(r, 0.8).to_vec3());
+    /// assert!((a - b).length() < 1e-15);
+    /// ```
+    #[must_use]
+    pub fn pose_at(&self, t: T) -> Pose<T> {
+        let translation = self.centre_at(t).to_vec3();
+        if self.omega == T::ZERO {
+            return Pose {
+                translation,
+                ..Pose::IDENTITY
+            };
+        }
+        let a = self.angle_at(t);
+        let (s, c) = (a.sin(), a.cos());
+        let k = self.axis;
+        let d = T::ONE - c;
+        let rotation = [
+            [
+                c + d * k.x * k.x,
+                d * k.x * k.y - s * k.z,
+                d * k.x * k.z + s * k.y,
+            ],
+            [
+                d * k.y * k.x + s * k.z,
+                c + d * k.y * k.y,
+                d * k.y * k.z - s * k.x,
+            ],
+            [
+                d * k.z * k.x - s * k.y,
+                d * k.z * k.y + s * k.x,
+                c + d * k.z * k.z,
+            ],
+        ];
+        Pose {
+            rotation,
+            translation,
+        }
     }
 
     /// The velocity `p'(t) = v + w x R(t) r` of body point `r`.

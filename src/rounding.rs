@@ -24,6 +24,17 @@ pub(crate) fn radius_up<T: Float>(max_sq: T) -> T {
     max_sq.sqrt() * (T::ONE + gamma::<T>(5)) + T::TWO * T::SQRT_ETA_UP
 }
 
+/// Section "Summary": the radius of a ball of computed centre `s` holding
+/// points `v_i`, from `max_sq = max_i fl(|fl(v_i - s)|^2)`: the subtraction
+/// errs by at most `u |v_i - s|` per component, so `|v_i - s| <= |fl(v_i - s)| / (1 - u)`,
+/// covered by the extra factor: `radius_up(max_sq) (1 + gamma_2)`.
+#[cfg(feature = "alloc")]
+#[inline]
+#[must_use]
+pub(crate) fn offset_radius_up<T: Float>(max_sq: T) -> T {
+    radius_up(max_sq) * (T::ONE + gamma::<T>(2))
+}
+
 /// Section "Linear term": `|v.n| <= |fl(v.n)| + gamma_4 * fl(sum |v_k n_k|)`.
 #[inline]
 #[must_use]
@@ -87,6 +98,89 @@ pub(crate) fn displacement_up<T: Float>(speed: T, length: T) -> T {
     } else {
         d
     }
+}
+
+/// `proofs/floating-point.md`, section "Pose": an upper bound of the distance
+/// between a body point placed by [`Pose`](crate::Pose) in floating point
+/// (`RigidMotion::pose_at` then `transform_point`) and its exact position,
+/// `delta <= u ((8 |a| + 96) R + 8 P) + 8 eta`, for a body within `R` of its
+/// rotation centre, rotated by the angle `a = |w| t`, whose centre lies within
+/// `P >= |x0| + |v| |t|` of the origin. Rounded up by its own `1 + gamma_8`.
+#[inline]
+#[must_use]
+pub(crate) fn pose_error_up<T: Float>(angle: T, radius: T, centre_reach: T) -> T {
+    let u = T::UNIT_ROUNDOFF;
+    let e = u
+        * ((T::from_u32(8) * angle.abs() + T::from_u32(96)) * radius
+            + T::from_u32(8) * centre_reach)
+        + T::from_u32(8) * T::ETA;
+    let e = e * (T::ONE + gamma::<T>(8));
+    if e.is_nan() {
+        T::INFINITY
+    } else {
+        e
+    }
+}
+
+/// Section "Box": an upper bound of the exact support `sum_k h_k |(R^T n)_k|`
+/// of a body-frame box of half extents `h` placed by the computed rotation,
+/// from the computed `supp^ = fl(sum_k h_k |fl(R^T n)_k|)`:
+/// `supp^ (1 + gamma_4) + pose_error_up(angle, |h|_1, 0) + gamma_8 |h|_1`.
+#[cfg(feature = "alloc")]
+#[inline]
+#[must_use]
+pub(crate) fn box_support_up<T: Float>(supp: T, half_l1: T, angle: T) -> T {
+    supp * (T::ONE + gamma::<T>(4))
+        + pose_error_up(angle, half_l1, T::ZERO)
+        + gamma::<T>(8) * half_l1
+}
+
+/// Section "Gap": a lower bound of the exact slab gap along the exact unit
+/// direction `n/|n|`, from a computed gap `g^ = min_B fl(q.n) - max_A fl(p.n)`
+/// over placed points within `reach` of the origin, each placed with error at
+/// most `pose_err_a`, `pose_err_b`:
+/// `(g^ - pose_err_a - pose_err_b - gamma_8 reach_sum)(1 + gamma_3) (1 - gamma_7)`
+/// rounded down; `<= 0` means "not separated along n".
+#[inline]
+#[must_use]
+pub(crate) fn gap_down<T: Float>(gap: T, pose_err_a: T, pose_err_b: T, reach_sum: T) -> T {
+    let slack = (pose_err_a + pose_err_b + gamma::<T>(8) * reach_sum) * (T::ONE + gamma::<T>(3));
+    let g = (gap - slack) * (T::ONE - gamma::<T>(7));
+    if g.is_nan() {
+        -T::INFINITY
+    } else {
+        g
+    }
+}
+
+/// Section "Step": a time step no longer than `gap / (mu_a + mu_b)`, the
+/// longest step over which points moving along `n` at speeds at most `mu_a`
+/// and `mu_b` cannot close the gap: `fl(fl(gap / fl((mu_a + mu_b)(1 + gamma_2))) (1 - gamma_2))`.
+/// `+inf` when nothing moves; `0` for a non-positive gap or a NaN.
+#[inline]
+#[must_use]
+pub(crate) fn step_down<T: Float>(gap: T, mu_a: T, mu_b: T) -> T {
+    if gap.is_nan() || gap <= T::ZERO {
+        return T::ZERO;
+    }
+    let mu = (mu_a + mu_b) * (T::ONE + gamma::<T>(2));
+    if mu == T::ZERO {
+        return T::INFINITY;
+    }
+    let s = gap / mu * (T::ONE - gamma::<T>(2));
+    if s.is_nan() {
+        T::ZERO
+    } else {
+        s
+    }
+}
+
+/// Section "Step": `t' <= t + step` exactly: the rounded sum, moved down by
+/// one ulp (round to nearest errs by at most half an ulp of the result).
+#[inline]
+#[must_use]
+pub(crate) fn advance_down<T: Float>(t: T, step: T) -> T {
+    (t + step).next_down()
 }
 
 #[cfg(test)]

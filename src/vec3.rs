@@ -120,6 +120,32 @@ impl<T: Float> Vec3<T> {
         self.x.is_finite() && self.y.is_finite() && self.z.is_finite()
     }
 
+    /// The squared distance `|o - self|^2` between two position vectors.
+    ///
+    /// ```
+    /// use motion_bound::Vec3;
+    /// assert_eq!(Vec3::new(1.0, 2.0, 2.0).distance_squared(Vec3::ZERO), 9.0);
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn distance_squared(self, o: Self) -> T {
+        (o - self).length_squared()
+    }
+
+    /// The point `self + (o - self) t` of the line through `self` and `o`
+    /// (`t = 0` gives `self`; `t = 1` gives `o` up to rounding).
+    ///
+    /// ```
+    /// use motion_bound::Vec3;
+    /// let m = Vec3::new(0.0, 0.0, 0.0).lerp(Vec3::new(2.0, 4.0, -6.0), 0.5);
+    /// assert_eq!(m, Vec3::new(1.0, 2.0, -3.0));
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn lerp(self, o: Self, t: T) -> Self {
+        self + (o - self) * t
+    }
+
     /// The vector scaled to unit length, or `None` when its length is zero or
     /// not finite (glam's `try_normalize`).
     #[inline]

@@ -9,5 +9,54 @@ pub fn bounds(vertices: &[[f32; 3]], v: [f32; 3], w: [f32; 3], n: [f32; 3]) -> O
     let body = VertexSet::try_new(vertices).ok()?;
     let motion = RigidMotion::try_from_arrays([0.0; 3], v, w).ok()?;
     let n = Direction::try_from_array(n).ok()?;
-    Some((evq(&body, &motion, n).speed, nevq(&body.summary(), &motion, n).speed))
+    Some((
+        evq(&body, &motion, n).speed,
+        nevq(&body.summary(), &motion, n).speed,
+    ))
+}
+
+/// Conservative advancement of two convex bodies with the caller's own
+/// distance oracle (here: the closest pair of vertices, exact for the
+/// face-to-face boxes of this check), without `std` or `alloc`: the first
+/// contact time, or `None`.
+pub fn time_of_impact(
+    a: &[[f32; 3]],
+    b: &[[f32; 3]],
+    va: [f32; 3],
+    wa: [f32; 3],
+    xb: [f32; 3],
+) -> Option<f32> {
+    use motion_bound::ca::{self, CaParams, ConvexPair, Witness};
+    use motion_bound::{Pose, Vec3};
+    let oracle = |pa: &Pose<f32>, pb: &Pose<f32>| {
+        let mut best: Option<Witness<f32>> = None;
+        for p in a {
+            for q in b {
+                let (x, y) = (
+                    pa.transform_point(Vec3::from_array(*p)),
+                    pb.transform_point(Vec3::from_array(*q)),
+                );
+                let d = (y - x).length();
+                if best.is_none_or(|w| d < w.distance) {
+                    best = Some(Witness {
+                        distance: d,
+                        on_a: x,
+                        on_b: y,
+                    });
+                }
+            }
+        }
+        best
+    };
+    let (sa, sb) = (VertexSet::try_new(a).ok()?, VertexSet::try_new(b).ok()?);
+    let ma = RigidMotion::try_from_arrays([0.0; 3], va, wa).ok()?;
+    let mb = RigidMotion::try_from_arrays(xb, [0.0; 3], [0.0; 3]).ok()?;
+    let report = ca::time_of_impact(
+        &mut ConvexPair::new(sa, sb, oracle),
+        &ma,
+        &mb,
+        &CaParams::default(),
+    )
+    .ok()?;
+    report.outcome.contact().map(|c| c.time)
 }

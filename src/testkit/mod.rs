@@ -13,6 +13,11 @@ use std::vec::Vec;
 
 use crate::{Direction, Float, Point3, RigidMotion, TimeInterval, Vec3};
 
+pub use crate::geometry::exact::triangles_intersect_exact;
+
+pub mod ground_truth;
+pub mod toi;
+
 /// How the raw vertices are placed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[cfg_attr(feature = "arbitrary", derive(arbitrary::Arbitrary))]

@@ -1,0 +1,127 @@
+//! The arc swept by the rotating direction over a motion's interval,
+//! precomputed once per motion.
+
+use crate::{Float, RigidMotion, Vec3};
+
+/// What the EVQ case split needs of a motion's rotation over its interval
+/// `[t_a, t_b]`: the angles `theta = |w| t` at the ends, their unit
+/// directions `u(theta) = (cos theta, -sin theta)` in the rotation plane, and
+/// whether the sweep `theta_b - theta_a` reaches pi.
+///
+/// Computing it costs two `sin`/`cos` pairs; a conservative-advancement
+/// iteration computes it once per body ([`PreparedMotion`](crate::PreparedMotion))
+/// and then evaluates thousands of per-node bounds without trigonometry.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SweptArc<T> {
+    /// The unit rotation axis (zero when not rotating).
+    pub(crate) axis: Vec3<T>,
+    /// `max(|theta_a|, |theta_b|)`, which the rounding margin grows with.
+    pub(crate) theta_m: T,
+    /// Whether the rotation is trusted at all (`|w|` above `TINY_LENGTH`).
+    pub(crate) rotating: bool,
+    /// Whether the computed sweep is at least pi.
+    pub(crate) full_turn: bool,
+    /// `u(theta_a)`.
+    pub(crate) ua: (T, T),
+    /// `u(theta_b)`.
+    pub(crate) ub: (T, T),
+}
+
+impl<T: Float> SweptArc<T> {
+    /// The arc of `motion` over its interval.
+    ///
+    /// ```
+    /// use motion_bound::{RigidMotion, SweptArc};
+    /// let m = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0, 0.0, 4.0]).unwrap();
+    /// assert!(SweptArc::new(&m).is_full_turn()); // 4 rad >= pi
+    /// assert!(!SweptArc::new(&m.restrict(0.0, 0.5).unwrap()).is_full_turn());
+    /// ```
+    #[must_use]
+    pub fn new(motion: &RigidMotion<T>) -> Self {
+        let omega = motion.angular_speed();
+        let iv = motion.interval();
+        let theta_a = omega * iv.start();
+        let theta_b = omega * iv.end();
+        let rotating = omega > T::TINY_LENGTH;
+        let full_turn = theta_b - theta_a >= T::PI;
+        let (ua, ub) = if rotating && !full_turn {
+            (
+                (theta_a.cos(), -theta_a.sin()),
+                (theta_b.cos(), -theta_b.sin()),
+            )
+        } else {
+            ((T::ONE, T::ZERO), (T::ONE, T::ZERO))
+        };
+        Self {
+            axis: motion.axis(),
+            theta_m: theta_a.abs().max_nan(theta_b.abs()),
+            rotating,
+            full_turn,
+            ua,
+            ub,
+        }
+    }
+
+    /// Whether the computed sweep `|w| (t_b - t_a)` is at least pi (then every
+    /// body point's rotation-plane line is met and the EVQ term is each point's
+    /// distance from the axis).
+    #[inline]
+    #[must_use]
+    pub const fn is_full_turn(&self) -> bool {
+        self.full_turn
+    }
+
+    /// Whether the motion rotates at all (`|w|` above [`Float::TINY_LENGTH`];
+    /// slower rotations are bounded by NEVQ alone, still soundly).
+    #[inline]
+    #[must_use]
+    pub const fn is_rotating(&self) -> bool {
+        self.rotating
+    }
+}
+
+/// A rigid motion with its [`SweptArc`]: what a body's bounds need of its
+/// motion, computed once and reused for every direction `n` and every node
+/// of a bounding-volume hierarchy.
+///
+/// ```
+/// use motion_bound::{evq, BoundKind, Direction, PreparedMotion, RigidMotion, VertexSet};
+/// let body = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+/// let body = VertexSet::try_new(&body).unwrap();
+/// let motion = RigidMotion::try_from_arrays([0.0; 3], [0.0, 0.0, 1.0], [0.0, 0.0, 0.5]).unwrap();
+/// let prepared = PreparedMotion::new(&motion);
+/// for n in [Direction::X, Direction::Y, Direction::Z] {
+///     // The same value as the one-shot function, without its trigonometry.
+///     assert_eq!(prepared.probe(n).speed(&body, BoundKind::Evq), evq(&body, &motion, n).speed);
+/// }
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PreparedMotion<T> {
+    motion: RigidMotion<T>,
+    arc: SweptArc<T>,
+}
+
+impl<T: Float> PreparedMotion<T> {
+    /// Precomputes the arc of `motion` over its interval.
+    #[must_use]
+    pub fn new(motion: &RigidMotion<T>) -> Self {
+        Self {
+            motion: *motion,
+            arc: SweptArc::new(motion),
+        }
+    }
+
+    /// The motion.
+    #[inline]
+    #[must_use]
+    pub const fn motion(&self) -> &RigidMotion<T> {
+        &self.motion
+    }
+
+    /// The precomputed arc.
+    #[inline]
+    #[must_use]
+    pub const fn arc(&self) -> &SweptArc<T> {
+        &self.arc
+    }
+}

@@ -1,0 +1,82 @@
+//! Bounding balls of body parts, relative to the rotation centre.
+
+use crate::error::{check_components, InputError, Quantity};
+use crate::rounding::{gamma, radius_up};
+use crate::Float;
+
+/// A ball of centre `s` (an offset from the rotation centre at the epoch)
+/// and radius `rho` that contains a part of a body: a node of a
+/// bounding-volume hierarchy, or a whole body.
+///
+/// Its directed bounds cost `O(1)`
+/// ([`DirectedProbe::ball_speed`](crate::DirectedProbe::ball_speed)); the
+/// rounded-up `|s|` and `|s| + rho` they need are computed once here.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BoundingBall<T> {
+    centre: [T; 3],
+    radius: T,
+    centre_norm_up: T,
+    outer_up: T,
+}
+
+impl<T: Float> BoundingBall<T> {
+    /// The ball of centre `centre` and radius `radius`.
+    ///
+    /// # Errors
+    /// [`InputError::NonFinite`] / [`InputError::TooLarge`] with
+    /// [`Quantity::Centre`] or [`Quantity::Radius`], or
+    /// [`InputError::NegativeRadius`].
+    ///
+    /// ```
+    /// use motion_bound::BoundingBall;
+    /// let b = BoundingBall::try_new([3.0, 4.0, 0.0], 1.0).unwrap();
+    /// assert!(b.outer_radius_up() >= 6.0 && b.outer_radius_up() < 6.0 + 1e-12);
+    /// assert!(BoundingBall::try_new([0.0; 3], -1.0).is_err());
+    /// ```
+    pub fn try_new(centre: [T; 3], radius: T) -> Result<Self, InputError> {
+        check_components(centre, Quantity::Centre)?;
+        check_components([radius, T::ZERO, T::ZERO], Quantity::Radius)?;
+        if radius < T::ZERO {
+            return Err(InputError::NegativeRadius);
+        }
+        let [x, y, z] = centre;
+        let centre_norm_up = radius_up(x * x + y * y + z * z);
+        // fl(fl(a + b)(1 + gamma_2)) >= (a + b)(1 - u)^2 (1 + 3u) >= a + b.
+        let outer_up = (centre_norm_up + radius) * (T::ONE + gamma::<T>(2));
+        Ok(Self {
+            centre,
+            radius,
+            centre_norm_up,
+            outer_up,
+        })
+    }
+
+    /// The centre, relative to the rotation centre at the epoch.
+    #[inline]
+    #[must_use]
+    pub const fn centre(&self) -> &[T; 3] {
+        &self.centre
+    }
+
+    /// The radius.
+    #[inline]
+    #[must_use]
+    pub const fn radius(&self) -> T {
+        self.radius
+    }
+
+    /// An upper bound of `|s|`.
+    #[inline]
+    #[must_use]
+    pub const fn centre_norm_up(&self) -> T {
+        self.centre_norm_up
+    }
+
+    /// An upper bound of `|s| + rho`, the distance from the rotation centre of
+    /// the ball's farthest point.
+    #[inline]
+    #[must_use]
+    pub const fn outer_radius_up(&self) -> T {
+        self.outer_up
+    }
+}

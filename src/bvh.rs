@@ -1,0 +1,314 @@
+//! A bounding-volume hierarchy of balls over a triangle mesh, relative to the
+//! body's rotation centre: what conservative advancement of non-convex
+//! meshes traverses.
+
+use alloc::vec::Vec;
+
+use crate::rounding::{gamma, offset_radius_up};
+use crate::{BoundingBall, Float, InputError};
+
+/// Marks a leaf in [`Node::right`].
+const LEAF: u32 = u32::MAX;
+
+/// A node: its bounding ball and either two children or one leaf.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Node<T> {
+    /// Contains every point of every triangle below the node.
+    pub(crate) ball: BoundingBall<T>,
+    /// Half extents of the node's body-frame box, centred at the ball's
+    /// centre and holding every corner (rounded up).
+    pub(crate) half: [T; 3],
+    /// `|half|_1`, rounded up.
+    pub(crate) half_l1: T,
+    /// The left child, or the leaf's index when `right == LEAF`.
+    pub(crate) left: u32,
+    /// The right child, or `LEAF`.
+    pub(crate) right: u32,
+}
+
+impl<T> Node<T> {
+    #[inline]
+    pub(crate) const fn leaf(&self) -> Option<usize> {
+        if self.right == LEAF {
+            Some(self.left as usize)
+        } else {
+            None
+        }
+    }
+}
+
+/// A leaf: one triangle, its corners (relative to the rotation centre) and
+/// the rounded-up largest distance of a corner from the rotation centre.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Leaf<T> {
+    pub(crate) corners: [[T; 3]; 3],
+    pub(crate) r_hat: T,
+    pub(crate) triangle: u32,
+}
+
+/// A triangle mesh with its ball hierarchy, built once per body.
+///
+/// Vertices are offsets from the body's rotation centre at the epoch (the
+/// crate's convention for body points). Every node's ball contains every
+/// point of its triangles in exact arithmetic (radii rounded up,
+/// `proofs/09-ca-toi.md`), and its directed bound costs `O(1)`
+/// ([`DirectedProbe::ball_speed`](crate::DirectedProbe::ball_speed)).
+///
+/// Built top-down: split at the median of the triangle centroids along the
+/// widest axis, one triangle per leaf; `2 N - 1` nodes for `N` triangles.
+#[derive(Clone, Debug)]
+pub struct BallTree<T> {
+    pub(crate) nodes: Vec<Node<T>>,
+    pub(crate) leaves: Vec<Leaf<T>>,
+    depth: usize,
+}
+
+impl<T: Float> BallTree<T> {
+    /// Builds the hierarchy of `triangles` (indices into `vertices`).
+    ///
+    /// # Errors
+    /// [`InputError::EmptyVertexSet`] when there is no triangle, and the
+    /// core's range errors for vertices or radii out of range.
+    ///
+    /// # Panics
+    /// Never; an index out of range is reported as
+    /// [`InputError::NonFinite`] of [`Quantity::Vertex`](crate::Quantity::Vertex)
+    /// with the index (meshes built by [`TriMesh`](crate::mesh::TriMesh) never have one).
+    pub fn try_new(vertices: &[[T; 3]], triangles: &[[u32; 3]]) -> Result<Self, InputError> {
+        if triangles.is_empty() {
+            return Err(InputError::EmptyVertexSet);
+        }
+        let mut leaves = Vec::with_capacity(triangles.len());
+        for (k, tri) in triangles.iter().enumerate() {
+            let mut corners = [[T::ZERO; 3]; 3];
+            for (c, &i) in corners.iter_mut().zip(tri) {
+                *c = *vertices
+                    .get(i as usize)
+                    .ok_or(InputError::NonFinite(crate::Quantity::Vertex(i as usize)))?;
+            }
+            let set = crate::VertexSet::try_new(&corners)?;
+            leaves.push(Leaf {
+                corners,
+                r_hat: set.summary().max_radius(),
+                triangle: k as u32,
+            });
+        }
+        let mut order: Vec<u32> = (0..leaves.len() as u32).collect();
+        let mut tree = Self {
+            nodes: Vec::with_capacity(2 * leaves.len()),
+            leaves: Vec::new(),
+            depth: 0,
+        };
+        tree.depth = tree.build(&leaves, &mut order, 1)?;
+        tree.leaves = leaves;
+        Ok(tree)
+    }
+
+    /// Appends the subtree over `order` and returns its depth.
+    fn build(
+        &mut self,
+        leaves: &[Leaf<T>],
+        order: &mut [u32],
+        depth: usize,
+    ) -> Result<usize, InputError> {
+        let index = self.nodes.len();
+        let (ball, half) = enclosing_ball(order.iter().map(|&l| &leaves[l as usize].corners))?;
+        let half_l1 = (half[0] + half[1] + half[2]) * (T::ONE + gamma::<T>(2));
+        if let [only] = order {
+            self.nodes.push(Node {
+                ball,
+                half,
+                half_l1,
+                left: *only,
+                right: LEAF,
+            });
+            return Ok(depth);
+        }
+        self.nodes.push(Node {
+            ball,
+            half,
+            half_l1,
+            left: 0,
+            right: 0,
+        });
+        // Split at the median centroid along the widest axis of the centroids.
+        let centroid = |l: u32| {
+            let c = &leaves[l as usize].corners;
+            [0, 1, 2].map(|k| c[0][k] + c[1][k] + c[2][k])
+        };
+        let (mut lo, mut hi) = ([T::INFINITY; 3], [-T::INFINITY; 3]);
+        for &l in order.iter() {
+            let c = centroid(l);
+            for k in 0..3 {
+                lo[k] = lo[k].min_nan(c[k]);
+                hi[k] = hi[k].max_nan(c[k]);
+            }
+        }
+        let ext = [0, 1, 2].map(|k| hi[k] - lo[k]);
+        let axis = if ext[0] >= ext[1] && ext[0] >= ext[2] {
+            0
+        } else if ext[1] >= ext[2] {
+            1
+        } else {
+            2
+        };
+        let mid = order.len() / 2;
+        order.select_nth_unstable_by(mid, |&x, &y| {
+            centroid(x)[axis]
+                .partial_cmp(&centroid(y)[axis])
+                .unwrap_or(core::cmp::Ordering::Equal)
+        });
+        let (left, right) = order.split_at_mut(mid);
+        let left_index = self.nodes.len() as u32;
+        let dl = self.build(leaves, left, depth + 1)?;
+        let right_index = self.nodes.len() as u32;
+        let dr = self.build(leaves, right, depth + 1)?;
+        self.nodes[index].left = left_index;
+        self.nodes[index].right = right_index;
+        Ok(dl.max(dr))
+    }
+
+    /// The hierarchy of a validated mesh (vertices relative to its rotation centre).
+    ///
+    /// # Errors
+    /// Only the core's range errors, for a mesh so large that a node radius
+    /// exceeds [`Float::MAX_INPUT`].
+    ///
+    /// ```
+    /// use motion_bound::{scenes, BallTree};
+    /// let mesh = scenes::torus::<f64>(1.0, 0.25, 24, 12).unwrap();
+    /// let tree = BallTree::try_from_mesh(&mesh).unwrap();
+    /// assert_eq!(tree.triangle_count(), mesh.triangle_count());
+    /// ```
+    pub fn try_from_mesh(mesh: &crate::TriMesh<T>) -> Result<Self, InputError> {
+        Self::try_new(mesh.vertices(), mesh.triangles())
+    }
+
+    /// The root's ball: contains the whole mesh.
+    #[must_use]
+    pub fn root_ball(&self) -> &BoundingBall<T> {
+        &self.nodes[0].ball
+    }
+
+    /// The number of nodes (`2 N - 1` for `N` triangles).
+    #[must_use]
+    pub fn node_count(&self) -> usize {
+        self.nodes.len()
+    }
+
+    /// The number of triangles (leaves).
+    #[must_use]
+    pub fn triangle_count(&self) -> usize {
+        self.leaves.len()
+    }
+
+    /// The length of the longest root-to-leaf path, in nodes.
+    #[must_use]
+    pub fn depth(&self) -> usize {
+        self.depth
+    }
+
+    /// The rounded-up largest distance of a vertex from the rotation centre.
+    #[must_use]
+    pub fn max_radius(&self) -> T {
+        self.leaves.iter().fold(T::ZERO, |m, l| m.max_nan(l.r_hat))
+    }
+}
+
+/// A ball holding every corner: centred at the corners' bounding-box centre,
+/// radius the largest corner distance rounded up (`rounding::offset_radius_up`);
+/// and the box's half extents about that centre, rounded up
+/// (`fl(fl(x)(1 + gamma_2)) >= x` for the exact `x = max(hi - c, c - lo)`).
+fn enclosing_ball<'a, T: Float + 'a>(
+    tris: impl Iterator<Item = &'a [[T; 3]; 3]> + Clone,
+) -> Result<(BoundingBall<T>, [T; 3]), InputError> {
+    let (mut lo, mut hi) = ([T::INFINITY; 3], [-T::INFINITY; 3]);
+    for tri in tris.clone() {
+        for c in tri {
+            for k in 0..3 {
+                lo[k] = lo[k].min_nan(c[k]);
+                hi[k] = hi[k].max_nan(c[k]);
+            }
+        }
+    }
+    // (lo + hi) / 2 without overflow: both are valid inputs.
+    let centre = [0, 1, 2].map(|k| lo[k] * T::HALF + hi[k] * T::HALF);
+    let mut max_sq = T::ZERO;
+    for tri in tris {
+        for c in tri {
+            let d = [0, 1, 2].map(|k| c[k] - centre[k]);
+            max_sq = max_sq.max_nan(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        }
+    }
+    let half = [0, 1, 2].map(|k| {
+        (hi[k] - centre[k]).max_nan(centre[k] - lo[k]) * (T::ONE + gamma::<T>(2)) + T::ETA
+    });
+    Ok((
+        BoundingBall::try_new(centre, offset_radius_up(max_sq))?,
+        half,
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::BallTree;
+
+    #[test]
+    fn every_ball_contains_its_triangles_and_the_tree_is_complete() {
+        // A strip of 64 triangles along a helix.
+        let mut v = alloc::vec::Vec::new();
+        let mut t = alloc::vec::Vec::new();
+        for i in 0..66u32 {
+            let a = f64::from(i) * 0.3;
+            v.push([a.cos() * 2.0, a.sin() * 2.0, a * 0.1 + f64::from(i % 2)]);
+        }
+        for i in 0..64u32 {
+            t.push([i, i + 1, i + 2]);
+        }
+        let tree = BallTree::try_new(&v, &t).unwrap();
+        assert_eq!(tree.node_count(), 127, "2N - 1 nodes");
+        assert_eq!(tree.triangle_count(), 64, "one leaf per triangle");
+        assert!(
+            tree.depth() <= 8,
+            "median split is balanced: depth {}",
+            tree.depth()
+        );
+        // Every node's ball holds the corners of every leaf below it.
+        fn check(tree: &BallTree<f64>, node: usize) -> alloc::vec::Vec<usize> {
+            let n = &tree.nodes[node];
+            let below = match n.leaf() {
+                Some(l) => alloc::vec![l],
+                None => {
+                    let mut b = check(tree, n.left as usize);
+                    b.extend(check(tree, n.right as usize));
+                    b
+                }
+            };
+            let c = n.ball.centre();
+            for &l in &below {
+                for p in &tree.leaves[l].corners {
+                    let d = ((p[0] - c[0]).powi(2) + (p[1] - c[1]).powi(2) + (p[2] - c[2]).powi(2))
+                        .sqrt();
+                    assert!(
+                        d <= n.ball.radius(),
+                        "node {node}: corner at {d} > {}",
+                        n.ball.radius()
+                    );
+                }
+            }
+            below
+        }
+        let all = check(&tree, 0);
+        assert_eq!(all.len(), 64, "every leaf reached once");
+    }
+
+    #[test]
+    fn bad_meshes_are_typed_errors() {
+        let v = [[0.0f32; 3]; 3];
+        assert!(BallTree::try_new(&v, &[]).is_err(), "no triangle");
+        assert!(
+            BallTree::try_new(&v, &[[0, 1, 3]]).is_err(),
+            "index out of range"
+        );
+    }
+}

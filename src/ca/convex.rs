@@ -1,0 +1,217 @@
+//! Conservative advancement of two convex bodies through any proximity oracle.
+
+use crate::ca::driver::{gap_step, placement_error};
+use crate::ca::{BoundChoice, CaParams, CaStep, StepResult, Witness};
+use crate::{BoundKind, Direction, Float, Pose, PreparedMotion, Vec3, VertexSet};
+
+/// A distance oracle for a pair of bodies: what another engine plugs in.
+///
+/// Given both bodies' placements (body points map to the world by
+/// `pose.transform_point`), return the closest features, or `None` when the
+/// bodies intersect. The distance may be approximate: the stepper never
+/// trusts it for soundness, only for declaring contact and choosing the
+/// direction `n`, along which it measures the certified gap itself
+/// (`proofs/09-ca-toi.md`, Lemma 9.1).
+pub trait Proximity<T> {
+    /// The closest features of the bodies placed at `pose_a`, `pose_b`.
+    fn closest(&mut self, pose_a: &Pose<T>, pose_b: &Pose<T>) -> Option<Witness<T>>;
+}
+
+impl<T, F: FnMut(&Pose<T>, &Pose<T>) -> Option<Witness<T>>> Proximity<T> for F {
+    fn closest(&mut self, pose_a: &Pose<T>, pose_b: &Pose<T>) -> Option<Witness<T>> {
+        self(pose_a, pose_b)
+    }
+}
+
+/// Conservative advancement of two convex bodies given by their vertices (a
+/// [`CaStep`]), with distances from a [`Proximity`] oracle.
+///
+/// Each step places both vertex sets, measures the gap along the oracle's
+/// closest direction, and bounds each body's directed speed with the bound
+/// chosen by [`CaParams::bound`]: with [`BoundChoice::Auto`], NEVQ first and
+/// EVQ (`O(N)`) only when NEVQ's step would not end the query.
+///
+/// ```
+/// use motion_bound::ca::{time_of_impact, CaParams, ConvexPair, Witness};
+/// use motion_bound::{Pose, RigidMotion, Vec3, VertexSet};
+/// // Two unit cubes' corners; a crude oracle: the closest pair of corners
+/// // (exact for these face-to-face cubes).
+/// let mut cube = [[0.0f64; 3]; 8];
+/// for (i, c) in cube.iter_mut().enumerate() {
+///     *c = [0, 1, 2].map(|k| if i >> k & 1 == 1 { 0.5 } else { -0.5 });
+/// }
+/// let body = VertexSet::try_new(&cube)?;
+/// let oracle = |pa: &Pose<f64>, pb: &Pose<f64>| {
+///     let mut best: Option<Witness<f64>> = None;
+///     for p in &cube {
+///         for q in &cube {
+///             let (a, b) = (pa.transform_point(Vec3::from_array(*p)), pb.transform_point(Vec3::from_array(*q)));
+///             let d = (b - a).length();
+///             if best.map_or(true, |w| d < w.distance) {
+///                 best = Some(Witness { distance: d, on_a: a, on_b: b });
+///             }
+///         }
+///     }
+///     best
+/// };
+/// let a = RigidMotion::try_from_arrays([0.0; 3], [4.0, 0.0, 0.0], [0.0; 3])?;
+/// let b = RigidMotion::try_from_arrays([3.0, 0.0, 0.0], [0.0; 3], [0.0; 3])?;
+/// let mut pair = ConvexPair::new(body, body, oracle);
+/// let report = time_of_impact(&mut pair, &a, &b, &CaParams::default())?;
+/// // The faces meet at t = 2/4.
+/// let t = report.outcome.contact().unwrap().time;
+/// assert!(t <= 0.5 && t > 0.5 - 1e-4, "t = {t}");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug)]
+pub struct ConvexPair<'a, T, P> {
+    a: VertexSet<'a, T>,
+    b: VertexSet<'a, T>,
+    oracle: P,
+}
+
+impl<'a, T: Float, P: Proximity<T>> ConvexPair<'a, T, P> {
+    /// The pair of convex bodies `a`, `b` (vertices relative to each body's
+    /// rotation centre) with the distance oracle `oracle`.
+    #[must_use]
+    pub const fn new(a: VertexSet<'a, T>, b: VertexSet<'a, T>, oracle: P) -> Self {
+        Self { a, b, oracle }
+    }
+
+    /// The oracle.
+    pub fn oracle_mut(&mut self) -> &mut P {
+        &mut self.oracle
+    }
+}
+
+/// `max_i fl(fl(pose r_i) . n)` or its minimum, over a vertex set.
+fn extent<T: Float>(pose: &Pose<T>, body: &VertexSet<'_, T>, n: Vec3<T>, max: bool) -> T {
+    let mut e = if max { -T::INFINITY } else { T::INFINITY };
+    for r in body.vertices() {
+        let x = pose.transform_point(Vec3::from_array(*r)).dot(n);
+        e = if max { e.max_nan(x) } else { e.min_nan(x) };
+    }
+    e
+}
+
+impl<T: Float, P: Proximity<T>> CaStep<T> for ConvexPair<'_, T, P> {
+    fn step(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> StepResult<T> {
+        let (pose_a, pose_b) = (a.motion().pose_at(t), b.motion().pose_at(t));
+        let Some(w) = self.oracle.closest(&pose_a, &pose_b) else {
+            let (ca, cb) = (pose_a.translation, pose_b.translation);
+            return StepResult::Touching {
+                witness: Witness {
+                    distance: T::ZERO,
+                    on_a: ca,
+                    on_b: cb,
+                },
+                normal: None,
+            };
+        };
+        let dir = Direction::try_new(w.on_b - w.on_a);
+        let (Ok(n), false) = (dir, w.distance <= params.contact_distance) else {
+            return StepResult::Touching {
+                witness: w,
+                normal: dir.ok().map(Direction::get),
+            };
+        };
+        let nv = n.get();
+        let gap = extent(&pose_b, &self.b, nv, false) - extent(&pose_a, &self.a, nv, true);
+        let (ea, ra) = placement_error(a.motion(), t, self.a.summary().max_radius());
+        let (eb, rb) = placement_error(b.motion(), t, self.b.summary().max_radius());
+        let (pa, pb) = (a.probe(n), b.probe(n));
+        let step_with = |kind| {
+            gap_step(
+                gap,
+                (ea, eb),
+                (ra, rb),
+                (pa.speed(&self.a, kind), pb.speed(&self.b, kind)),
+            )
+            .0
+        };
+        let step = match params.bound {
+            BoundChoice::Nevq => step_with(BoundKind::Nevq),
+            BoundChoice::Evq => step_with(BoundKind::Evq),
+            BoundChoice::Auto => {
+                let cheap = step_with(BoundKind::Nevq);
+                if cheap >= a.motion().interval().end() - t {
+                    cheap
+                } else {
+                    cheap.max_nan(step_with(BoundKind::Evq))
+                }
+            }
+        };
+        StepResult::Advance {
+            step,
+            witness: Some(w),
+            normal: Some(nv),
+        }
+    }
+}
+
+/// The [`Proximity`] oracle of this crate for convex polytopes: GJK
+/// ([`gjk_distance`](crate::gjk_distance)) on the two vertex sets placed at
+/// each step.
+#[derive(Clone, Copy, Debug)]
+pub struct GjkProximity<'a, T> {
+    a: &'a [[T; 3]],
+    b: &'a [[T; 3]],
+    params: crate::GjkParams<T>,
+}
+
+impl<'a, T: Float> GjkProximity<'a, T> {
+    /// GJK between the convex hulls of `a` and `b` (body points), with
+    /// default [`GjkParams`](crate::GjkParams).
+    #[must_use]
+    pub fn new(a: &'a [[T; 3]], b: &'a [[T; 3]]) -> Self {
+        Self {
+            a,
+            b,
+            params: crate::GjkParams::default(),
+        }
+    }
+}
+
+impl<T: Float> Proximity<T> for GjkProximity<'_, T> {
+    fn closest(&mut self, pose_a: &Pose<T>, pose_b: &Pose<T>) -> Option<Witness<T>> {
+        let pa = crate::ConvexPolytope::try_new(self.a, *pose_a).ok()?;
+        let pb = crate::ConvexPolytope::try_new(self.b, *pose_b).ok()?;
+        let r = crate::gjk_distance(&pa, &pb, &self.params);
+        if r.intersecting {
+            return None;
+        }
+        Some(Witness {
+            distance: r.distance,
+            on_a: r.on_a,
+            on_b: r.on_b,
+        })
+    }
+}
+
+impl<'a, T: Float> ConvexPair<'a, T, GjkProximity<'a, T>> {
+    /// The pair of convex bodies `a`, `b` with GJK distances: conservative
+    /// advancement of convex polytopes out of the box.
+    ///
+    /// ```
+    /// use motion_bound::ca::{time_of_impact, CaParams, ConvexPair};
+    /// use motion_bound::{RigidMotion, VertexSet};
+    /// let tet = [[1.0, 1.0, 1.0], [1.0, -1.0, -1.0], [-1.0, 1.0, -1.0], [-1.0, -1.0, 1.0]];
+    /// let body = VertexSet::try_new(&tet)?;
+    /// let a = RigidMotion::try_from_arrays([-4.0, 0.0, 0.0], [8.0, 0.0, 0.0], [0.0, 3.0, 1.0])?;
+    /// let b = RigidMotion::try_from_arrays([4.0, 0.0, 0.0], [-2.0, 0.0, 0.0], [2.0, 0.0, 0.0])?;
+    /// let report = time_of_impact(&mut ConvexPair::with_gjk(body, body), &a, &b, &CaParams::default())?;
+    /// let t = report.outcome.contact().expect("they collide").time;
+    /// assert!(t > 0.0 && t < 0.8);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    #[must_use]
+    pub fn with_gjk(a: VertexSet<'a, T>, b: VertexSet<'a, T>) -> Self {
+        Self::new(a, b, GjkProximity::new(a.vertices(), b.vertices()))
+    }
+}

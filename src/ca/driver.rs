@@ -1,0 +1,175 @@
+//! The conservative-advancement loop.
+
+use crate::ca::{CaError, CaOutcome, CaParams, CaReport, Contact, ContactCriterion, Witness};
+use crate::rounding::{advance_down, gamma, pose_error_up};
+use crate::{Float, PreparedMotion, RigidMotion, Vec3};
+
+/// What a geometry reports at one time of a conservative-advancement query.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum StepResult<T> {
+    /// The bodies are within the contact distance.
+    Touching {
+        /// The closest features found.
+        witness: Witness<T>,
+        /// The contact normal from A to B, if known.
+        normal: Option<Vec3<T>>,
+    },
+    /// The bodies do not touch during `[t, t + step]` (certified).
+    Advance {
+        /// The safe step; anything at least the rest of the interval means no
+        /// contact before its end. `+inf` is allowed (nothing approaches).
+        step: T,
+        /// The closest features found, if the stepper computed them.
+        witness: Option<Witness<T>>,
+        /// The separating direction used, from A to B, if any.
+        normal: Option<Vec3<T>>,
+    },
+}
+
+/// A geometry that conservative advancement can query: at time `t`, with both
+/// motions restricted (and prepared) to the rest of the interval `[t, t_end]`,
+/// either "touching" (distance at most `params.contact_distance`) or a step
+/// `s` such that the bodies certainly do not touch during `[t, t + s]`.
+///
+/// The contract is soundness: a returned step must never reach past a true
+/// contact of the exact motions. The steppers of this crate meet it with the
+/// certified gaps and bounds of `proofs/09-ca-toi.md`; an implementation for
+/// another geometry can use [`gap_step`] to turn a separating gap into a step.
+pub trait CaStep<T: Float> {
+    /// Inspects the pair at time `t` (`a` and `b` are the motions restricted
+    /// to `[t, t_end]`).
+    fn step(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> StepResult<T>;
+}
+
+/// The first time of contact of two moving bodies over the motions' common
+/// interval, by conservative advancement with `stepper`.
+///
+/// The reported contact time is never later than the true first contact of the
+/// exact motions (given a sound stepper): every step is certified contact-free.
+///
+/// # Errors
+/// [`CaError::InvalidParameter`] for bad parameters, [`CaError::IntervalMismatch`]
+/// when the motions' intervals differ.
+///
+/// ```
+/// use motion_bound::ca::{time_of_impact, BallPair, CaParams};
+/// use motion_bound::{BoundingBall, RigidMotion};
+/// // Two unit balls 4 apart; A moves towards B at 3 per unit time: contact at t = 2/3.
+/// let ball = BoundingBall::try_new([0.0; 3], 1.0)?;
+/// let a = RigidMotion::try_from_arrays([0.0; 3], [3.0, 0.0, 0.0], [0.0, 0.0, 5.0])?;
+/// let b = RigidMotion::try_from_arrays([4.0, 0.0, 0.0], [0.0; 3], [1.0, 0.0, 0.0])?;
+/// let report = time_of_impact(&mut BallPair::new(ball, ball), &a, &b, &CaParams::default())?;
+/// let t = report.outcome.contact().unwrap().time;
+/// assert!(t <= 2.0 / 3.0 && t > 2.0 / 3.0 - 1e-4);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
+    stepper: &mut S,
+    motion_a: &RigidMotion<T>,
+    motion_b: &RigidMotion<T>,
+    params: &CaParams<T>,
+) -> Result<CaReport<T>, CaError> {
+    params.validate()?;
+    if motion_a.interval() != motion_b.interval() {
+        return Err(CaError::IntervalMismatch);
+    }
+    let end = motion_a.interval().end();
+    let mut t = motion_a.interval().start();
+    let mut iterations = 0;
+    let report = |outcome, iterations| {
+        Ok(CaReport {
+            outcome,
+            iterations,
+        })
+    };
+    loop {
+        if iterations == params.max_iterations {
+            return report(CaOutcome::IterationLimit { time: t }, iterations);
+        }
+        iterations += 1;
+        let pa = PreparedMotion::new(&motion_a.restrict(t, end)?);
+        let pb = PreparedMotion::new(&motion_b.restrict(t, end)?);
+        match stepper.step(t, &pa, &pb, params) {
+            StepResult::Touching { witness, normal } => {
+                let contact = Contact {
+                    time: t,
+                    witness,
+                    normal: normal.or_else(|| witness.normal()),
+                };
+                let outcome = if iterations == 1 {
+                    CaOutcome::InitialContact(contact)
+                } else {
+                    CaOutcome::Contact {
+                        contact,
+                        criterion: ContactCriterion::Distance,
+                    }
+                };
+                return report(outcome, iterations);
+            }
+            StepResult::Advance {
+                step,
+                witness,
+                normal,
+            } => {
+                let step = if step.is_nan() { T::ZERO } else { step };
+                let next = advance_down(t, step);
+                if next >= end {
+                    return report(CaOutcome::Separated, iterations);
+                }
+                if step <= params.time_tolerance || next <= t {
+                    let witness = witness.unwrap_or(Witness {
+                        distance: T::INFINITY,
+                        on_a: pa.motion().centre_at(t).to_vec3(),
+                        on_b: pb.motion().centre_at(t).to_vec3(),
+                    });
+                    let contact = Contact {
+                        time: t,
+                        witness,
+                        normal: normal.or_else(|| witness.normal()),
+                    };
+                    return report(
+                        CaOutcome::Contact {
+                            contact,
+                            criterion: ContactCriterion::TimeTolerance,
+                        },
+                        iterations,
+                    );
+                }
+                t = next;
+            }
+        }
+    }
+}
+
+/// An upper bound of how far a body point within `radius` of the rotation
+/// centre, placed at time `t` by `motion.pose_at(t)` in floating point, is
+/// from its exact position (`proofs/floating-point.md`, section "Pose"), and
+/// an upper bound of the distance from the origin of every placed point
+/// (`|x0| + |v| |t| + radius`, rounded up).
+#[must_use]
+pub fn placement_error<T: Float>(motion: &RigidMotion<T>, t: T, radius: T) -> (T, T) {
+    let centre_reach = (motion.centre().to_vec3().norm_l1() + motion.linear().norm_l1() * t.abs())
+        * (T::ONE + gamma::<T>(4));
+    let err = pose_error_up(motion.angle_at(t), radius, centre_reach);
+    (
+        err,
+        (centre_reach + radius) * (T::ONE + gamma::<T>(2)) + err,
+    )
+}
+
+/// A certified safe step from a computed gap along a direction: `gap` is
+/// `min_B fl(q . n) - max_A fl(p . n)` over the placed points of both bodies,
+/// `err_*`/`reach_*` come from [`placement_error`], and `mu_*` bound the
+/// speeds along `n` (the directed bounds of this crate). Returns the step
+/// and the certified gap (`<= 0`: not separated along `n`, step `0`).
+#[must_use]
+pub fn gap_step<T: Float>(gap: T, err: (T, T), reach: (T, T), mu: (T, T)) -> (T, T) {
+    let g = crate::rounding::gap_down(gap, err.0, err.1, reach.0 + reach.1);
+    (crate::rounding::step_down(g, mu.0, mu.1), g)
+}

@@ -1,0 +1,332 @@
+//! Conservative advancement of two triangle meshes through their ball trees.
+
+use alloc::collections::BinaryHeap;
+
+use crate::bvh::{BallTree, Leaf};
+use crate::ca::driver::{gap_step, placement_error};
+use crate::ca::{CaParams, CaStep, StepResult, Witness};
+use crate::geometry::closest::triangle_triangle;
+use crate::rounding::box_support_up;
+use crate::{BoundKind, Direction, Float, Pose, PreparedMotion, Vec3};
+
+/// Work counters of a [`MeshPair`], summed over every step since the last
+/// [`MeshPair::reset_stats`]: what a profile of the query needs.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TraversalStats {
+    /// Node pairs popped from the traversal stack.
+    pub node_pairs: u64,
+    /// Node pairs discarded because their own safe step already exceeded the
+    /// best step found (or the rest of the interval).
+    pub pruned: u64,
+    /// Triangle pairs whose exact distance was computed.
+    pub triangle_pairs: u64,
+    /// Directed bounds evaluated (two per node pair that is separated).
+    pub bounds: u64,
+}
+
+/// Conservative advancement of two non-convex triangle meshes (a
+/// [`CaStep`]): one step is a simultaneous descent of both ball trees.
+///
+/// For a node pair with balls `(s_a, rho_a)`, `(s_b, rho_b)` placed at time
+/// `t`, the direction `n` joining the centres separates the balls by the gap
+/// `g = |c_b - c_a| - rho_a - rho_b`; every point below the pair moves along
+/// `n` at most at the balls' directed bounds `mu_a + mu_b` (EVQ of a ball is
+/// `O(1)`), so the pair cannot touch before `g / (mu_a + mu_b)`. A pair whose
+/// step is at least the best step found so far is pruned; triangle pairs get
+/// their exact distance, their own closest direction and the bounds of their
+/// three corners. The least step over the cut is safe for the whole meshes
+/// (`proofs/09-ca-toi.md`).
+#[derive(Debug)]
+pub struct MeshPair<'a, T> {
+    a: &'a BallTree<T>,
+    b: &'a BallTree<T>,
+    heap: BinaryHeap<Pending>,
+    stats: TraversalStats,
+    accept: T,
+    closest: Option<(u32, u32)>,
+}
+
+impl<'a, T: Float> MeshPair<'a, T> {
+    /// The pair of meshes `a` and `b` (each relative to its rotation centre).
+    #[must_use]
+    pub fn new(a: &'a BallTree<T>, b: &'a BallTree<T>) -> Self {
+        Self {
+            a,
+            b,
+            heap: BinaryHeap::with_capacity(256),
+            stats: TraversalStats::default(),
+            accept: T::ONE,
+            closest: None,
+        }
+    }
+
+    /// Accepts a step once every pair left in the queue has a step at least
+    /// `fraction` of the best found (default `1`: the least step over the
+    /// finest cut the traversal reaches). A smaller fraction refines less per
+    /// iteration and takes shorter steps; every step stays safe.
+    /// A fraction outside `(0, 1]` (or NaN) is taken as `1`.
+    #[must_use]
+    pub fn with_accept_fraction(mut self, fraction: T) -> Self {
+        self.accept = if fraction > T::ZERO && fraction <= T::ONE {
+            fraction
+        } else {
+            T::ONE
+        };
+        self
+    }
+
+    /// The triangle indices (in A's and B's meshes) of the closest triangle
+    /// pair the last step found, if it computed one: the witness's triangles.
+    #[must_use]
+    pub const fn closest_triangles(&self) -> Option<(u32, u32)> {
+        self.closest
+    }
+
+    /// The work done since the pair was made or last reset.
+    #[must_use]
+    pub const fn stats(&self) -> TraversalStats {
+        self.stats
+    }
+
+    /// Resets the work counters.
+    pub fn reset_stats(&mut self) {
+        self.stats = TraversalStats::default();
+    }
+}
+
+/// What one body contributes at the current time.
+struct Placed<'p, T> {
+    pose: Pose<T>,
+    motion: &'p PreparedMotion<T>,
+    err: T,
+    reach: T,
+    /// The rotation angle `|w| t` of the pose.
+    angle: T,
+}
+
+impl<T: Float> Placed<'_, T> {
+    fn centre(&self, tree: &BallTree<T>, node: u32) -> Vec3<T> {
+        self.pose
+            .transform_point(Vec3::from_array(*tree.nodes[node as usize].ball.centre()))
+    }
+
+    fn corners(&self, leaf: &Leaf<T>) -> [Vec3<T>; 3] {
+        leaf.corners
+            .map(|c| self.pose.transform_point(Vec3::from_array(c)))
+    }
+
+    fn leaf_speed(&self, leaf: &Leaf<T>, n: Direction<T>, kind: BoundKind) -> T {
+        let probe = self.motion.probe(n);
+        match kind {
+            BoundKind::Nevq => probe.nevq_speed_radius(leaf.r_hat),
+            _ => probe.evq_speed_points(&leaf.corners, leaf.r_hat),
+        }
+    }
+}
+
+impl<T: Float> MeshPair<'_, T> {
+    /// The safe step of a node pair from its balls (Lemma 9.1 with the
+    /// direction joining the centres), `0` when the balls overlap.
+    fn ball_step(
+        &mut self,
+        pa: &Placed<'_, T>,
+        pb: &Placed<'_, T>,
+        i: u32,
+        j: u32,
+        kind: BoundKind,
+    ) -> T {
+        let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
+        let d = pb.centre(self.b, j) - pa.centre(self.a, i);
+        let Ok(n) = Direction::try_new(d) else {
+            return T::ZERO;
+        };
+        let nv = n.get();
+        let centres = d.dot(nv);
+        let ball_gap = centres - na.ball.radius() - nb.ball.radius();
+        // The boxes' slab along n: support `sum h_k |(R^T n)_k|` per body
+        // (`proofs/floating-point.md`, "Box").
+        let support = |p: &Placed<'_, T>, half: &[T; 3], half_l1: T| {
+            let m = p.pose.inverse_transform_vector(nv);
+            let s = half[0] * m.x.abs() + half[1] * m.y.abs() + half[2] * m.z.abs();
+            box_support_up(s, half_l1, p.angle)
+        };
+        let box_gap =
+            centres - support(pa, &na.half, na.half_l1) - support(pb, &nb.half, nb.half_l1);
+        let gap = ball_gap.max_nan(box_gap);
+        if gap <= T::ZERO {
+            return T::ZERO;
+        }
+        self.stats.bounds += 2;
+        let mu = (
+            pa.motion.probe(n).ball_speed(&na.ball, kind),
+            pb.motion.probe(n).ball_speed(&nb.ball, kind),
+        );
+        gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu).0
+    }
+}
+
+/// The slab between two placed triangles along `n`: `min_B q.n - max_A p.n`.
+#[inline]
+fn slab_gap<T: Float>(ta: &[Vec3<T>; 3], tb: &[Vec3<T>; 3], n: Vec3<T>) -> T {
+    let lo_b = tb[0].dot(n).min_nan(tb[1].dot(n)).min_nan(tb[2].dot(n));
+    let hi_a = ta[0].dot(n).max_nan(ta[1].dot(n)).max_nan(ta[2].dot(n));
+    lo_b - hi_a
+}
+
+/// A node pair waiting in the best-first queue, keyed by its safe step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Pending {
+    key: OrdF64,
+    i: u32,
+    j: u32,
+}
+
+impl Pending {
+    fn new<T: Float>(step: T, i: u32, j: u32) -> Self {
+        Self {
+            key: OrdF64(step.to_f64()),
+            i,
+            j,
+        }
+    }
+}
+
+impl Eq for Pending {}
+
+impl PartialOrd for Pending {
+    fn partial_cmp(&self, other: &Self) -> Option<core::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Pending {
+    /// Reversed: `BinaryHeap` pops the pair with the least step first.
+    fn cmp(&self, other: &Self) -> core::cmp::Ordering {
+        other.key.0.total_cmp(&self.key.0)
+    }
+}
+
+/// An `f64` key (a step converted exactly from `f32` or `f64`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct OrdF64(f64);
+
+impl<T: Float> CaStep<T> for MeshPair<'_, T> {
+    fn step(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> StepResult<T> {
+        // Node centres and box corners lie within 4 times the root ball's
+        // outer radius of the rotation centre (a box centre is within
+        // sqrt(3) radii of the ball it was built from): cover them all.
+        let place = |tree: &BallTree<T>, m: &'_ PreparedMotion<T>| {
+            let r = tree.root_ball().outer_radius_up() * T::from_u32(4);
+            let (err, reach) = placement_error(m.motion(), t, r);
+            (m.motion().pose_at(t), err, reach)
+        };
+        let (pose, err, reach) = place(self.a, a);
+        let pa = Placed {
+            pose,
+            motion: a,
+            err,
+            reach,
+            angle: a.motion().angle_at(t),
+        };
+        let (pose, err, reach) = place(self.b, b);
+        let pb = Placed {
+            pose,
+            motion: b,
+            err,
+            reach,
+            angle: b.motion().angle_at(t),
+        };
+        let kind = params.bound.cheap_kind();
+        let mut best = b.motion().interval().end() - t;
+        let mut witness: Option<Witness<T>> = None;
+        let mut normal = None;
+        self.heap.clear();
+        self.closest = None;
+        self.heap.push(Pending::new(T::ZERO, 0, 0));
+        while let Some(Pending { key, i, j }) = self.heap.pop() {
+            let key = T::from_f64(key.0);
+            if key >= best * self.accept {
+                // Best-first: every pair left has a step at least `key`, so
+                // `min(best, key)` is safe for the whole meshes.
+                self.stats.pruned += self.heap.len() as u64 + 1;
+                best = best.min_nan(key);
+                break;
+            }
+            self.stats.node_pairs += 1;
+            let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
+            if let (Some(la), Some(lb)) = (na.leaf(), nb.leaf()) {
+                let (la, lb) = (&self.a.leaves[la], &self.b.leaves[lb]);
+                let (ta, tb) = (pa.corners(la), pb.corners(lb));
+                // Cheap first: the corners' slab along the line joining the
+                // ball centres (Lemma 9.1 holds for any direction).
+                if let Ok(n) = Direction::try_new(pb.centre(self.b, j) - pa.centre(self.a, i)) {
+                    let gap = slab_gap(&ta, &tb, n.get());
+                    if gap > T::ZERO {
+                        self.stats.bounds += 2;
+                        let mu = (pa.leaf_speed(la, n, kind), pb.leaf_speed(lb, n, kind));
+                        let (step, _) = gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu);
+                        if step >= best {
+                            self.stats.pruned += 1;
+                            continue;
+                        }
+                    }
+                }
+                self.stats.triangle_pairs += 1;
+                let cp = triangle_triangle(&ta, &tb);
+                let w = Witness {
+                    distance: cp.distance,
+                    on_a: cp.on_a,
+                    on_b: cp.on_b,
+                };
+                let dir = Direction::try_new(cp.on_b - cp.on_a);
+                if witness.is_none_or(|b: Witness<T>| w.distance < b.distance) {
+                    witness = Some(w);
+                    self.closest = Some((la.triangle, lb.triangle));
+                }
+                let (Ok(n), true) = (dir, cp.distance > params.contact_distance) else {
+                    return StepResult::Touching {
+                        witness: w,
+                        normal: dir.ok().map(Direction::get),
+                    };
+                };
+                let nv = n.get();
+                self.stats.bounds += 2;
+                let mu = (pa.leaf_speed(la, n, kind), pb.leaf_speed(lb, n, kind));
+                let gap = slab_gap(&ta, &tb, nv);
+                let (step, _) = gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu);
+                if step < best {
+                    best = step;
+                    normal = Some(nv);
+                }
+                continue;
+            }
+            // Descend into the larger ball (a leaf is never split).
+            let split_a = nb.leaf().is_some()
+                || (na.leaf().is_none() && na.ball.radius() >= nb.ball.radius());
+            let children = if split_a {
+                [(na.left, j), (na.right, j)]
+            } else {
+                [(i, nb.left), (i, nb.right)]
+            };
+            for (ci, cj) in children {
+                let step = self.ball_step(&pa, &pb, ci, cj, kind);
+                if step < best {
+                    self.heap.push(Pending::new(step, ci, cj));
+                } else {
+                    self.stats.pruned += 1;
+                }
+            }
+        }
+        StepResult::Advance {
+            step: best,
+            witness,
+            normal,
+        }
+    }
+}

@@ -1,0 +1,33 @@
+//! Conservative advancement: the first time of contact of two moving bodies.
+//!
+//! At a time `t` the bodies are a gap `g` apart along a unit direction `n`
+//! (every point of `A` lies in `{x . n <= h}`, every point of `B` in
+//! `{x . n >= h + g}`). If no point of `A` or `B` moves along `n` faster than
+//! `mu_A` and `mu_B` over `[t, t_end]` (the directed bounds of this crate),
+//! the bodies cannot touch before `t + g / (mu_A + mu_B)`. Stepping time by
+//! that amount until the distance falls below a tolerance never steps past
+//! the first contact (`proofs/09-ca-toi.md`).
+//!
+//! * [`CaStep`] is what a geometry provides at a time `t`: a certified gap and
+//!   a safe step, or "touching". Implement it for your own geometry, or use
+//!   one of the steppers of this crate.
+//! * [`time_of_impact`] runs the loop and says what ended it ([`CaOutcome`]),
+//!   with the iteration count.
+//! * [`CaParams`] holds the tolerances, the iteration limit and the bound
+//!   choice ([`BoundChoice`]).
+
+mod balls;
+mod convex;
+mod driver;
+#[cfg(feature = "alloc")]
+mod mesh;
+mod outcome;
+mod params;
+
+pub use balls::BallPair;
+pub use convex::{ConvexPair, GjkProximity, Proximity};
+pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};
+#[cfg(feature = "alloc")]
+pub use mesh::{MeshPair, TraversalStats};
+pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness};
+pub use params::{BoundChoice, CaError, CaParams};

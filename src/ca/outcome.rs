@@ -1,0 +1,105 @@
+//! What a conservative-advancement query found, and what ended it.
+
+use crate::{Float, Vec3};
+
+/// Closest features at one time: the distance and a witness point on each
+/// body (in the world frame).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Witness<T> {
+    /// The distance found between the bodies (for a contact, at most the
+    /// contact distance).
+    pub distance: T,
+    /// The witness point on body A.
+    pub on_a: Vec3<T>,
+    /// The witness point on body B.
+    pub on_b: Vec3<T>,
+}
+
+impl<T: Float> Witness<T> {
+    /// The unit direction from `on_a` to `on_b`, or `None` when the witness
+    /// points coincide (a touching contact has no defined direction from the
+    /// points alone).
+    #[must_use]
+    pub fn normal(&self) -> Option<Vec3<T>> {
+        (self.on_b - self.on_a).try_normalize()
+    }
+}
+
+/// A contact: the time and the closest features at that time.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Contact<T> {
+    /// The reported time of contact; never later than the true first
+    /// contact (`proofs/09-ca-toi.md`).
+    pub time: T,
+    /// The closest features at `time`.
+    pub witness: Witness<T>,
+    /// The unit contact normal from A to B at `time`, when the stepper knew
+    /// one (the last separating direction it used), else the witnesses'.
+    pub normal: Option<Vec3<T>>,
+}
+
+/// Which tolerance declared a contact.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum ContactCriterion {
+    /// The distance fell to the contact distance or below.
+    Distance,
+    /// The safe step fell below the time tolerance while the distance was
+    /// still above the contact distance (a fast or grazing approach): the time
+    /// is still never later than a true contact, but there may be none.
+    TimeTolerance,
+}
+
+/// What ended a conservative-advancement query.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum CaOutcome<T> {
+    /// Contact at `contact.time`, declared by `criterion`.
+    Contact {
+        /// The contact.
+        contact: Contact<T>,
+        /// Which tolerance declared it.
+        criterion: ContactCriterion,
+    },
+    /// The bodies are already within the contact distance at the start.
+    InitialContact(Contact<T>),
+    /// No contact in the interval: the bodies are certified separated over it.
+    Separated,
+    /// The iteration limit was reached; no contact before `time` (certified),
+    /// nothing known after.
+    IterationLimit {
+        /// The safe time reached.
+        time: T,
+    },
+}
+
+impl<T: Float> CaOutcome<T> {
+    /// The contact, if the query declared one (initial or later).
+    #[must_use]
+    pub fn contact(&self) -> Option<&Contact<T>> {
+        match self {
+            Self::Contact { contact, .. } | Self::InitialContact(contact) => Some(contact),
+            Self::Separated | Self::IterationLimit { .. } => None,
+        }
+    }
+
+    /// The earliest time a contact may happen: the contact time, the
+    /// iteration limit's time, or `None` when separated over the interval.
+    #[must_use]
+    pub fn earliest_possible_contact(&self) -> Option<T> {
+        match self {
+            Self::Contact { contact, .. } | Self::InitialContact(contact) => Some(contact.time),
+            Self::IterationLimit { time } => Some(*time),
+            Self::Separated => None,
+        }
+    }
+}
+
+/// The outcome with the number of iterations (calls of the stepper) it took.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CaReport<T> {
+    /// What ended the query.
+    pub outcome: CaOutcome<T>,
+    /// Iterations used (at least one).
+    pub iterations: u32,
+}

@@ -1,0 +1,147 @@
+//! Tolerances, limits and the bound choice of a conservative-advancement query.
+
+use core::fmt;
+
+use crate::{BoundKind, Float};
+
+/// Which directed bound a conservative-advancement query uses.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum BoundChoice {
+    /// NEVQ (the seed's Eq. 3) everywhere: cheapest, loosest.
+    Nevq,
+    /// EVQ (the seed's Eq. 1, corrected Eq. 2) everywhere: tightest; `O(N)` per
+    /// query on vertex sets, `O(1)` on bounding balls.
+    Evq,
+    /// EVQ wherever it costs `O(1)` (bounding balls, triangles); on a vertex
+    /// set, NEVQ first and EVQ only when NEVQ's step would not end the query.
+    #[default]
+    Auto,
+}
+
+impl BoundChoice {
+    /// The bound used where the cost is `O(1)` either way.
+    #[inline]
+    #[must_use]
+    pub const fn cheap_kind(self) -> BoundKind {
+        match self {
+            Self::Nevq => BoundKind::Nevq,
+            Self::Evq | Self::Auto => BoundKind::Evq,
+        }
+    }
+}
+
+/// The parameters of a conservative-advancement query.
+///
+/// ```
+/// use motion_bound::ca::{BoundChoice, CaParams};
+/// let p = CaParams::<f64>::default().with_contact_distance(1e-3).with_bound(BoundChoice::Evq);
+/// assert_eq!(p.max_iterations, 100);
+/// assert!(p.validate().is_ok());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CaParams<T> {
+    /// Contact is declared when the distance is at most this (in the scene's
+    /// length unit). Default `1e-4`: set it for your scale.
+    pub contact_distance: T,
+    /// A step shorter than this ends the query with
+    /// [`ContactCriterion::TimeTolerance`](crate::ca::ContactCriterion::TimeTolerance)
+    /// (the bodies approach too fast to resolve further). Default `1e-9`.
+    pub time_tolerance: T,
+    /// The most iterations before [`CaOutcome::IterationLimit`](crate::ca::CaOutcome::IterationLimit).
+    /// Default `100`.
+    pub max_iterations: u32,
+    /// Which bound to use. Default [`BoundChoice::Auto`].
+    pub bound: BoundChoice,
+}
+
+impl<T: Float> Default for CaParams<T> {
+    fn default() -> Self {
+        Self {
+            contact_distance: T::from_f64(1e-4),
+            time_tolerance: T::from_f64(1e-9),
+            max_iterations: 100,
+            bound: BoundChoice::Auto,
+        }
+    }
+}
+
+impl<T: Float> CaParams<T> {
+    /// With another contact distance.
+    #[must_use]
+    pub const fn with_contact_distance(mut self, d: T) -> Self {
+        self.contact_distance = d;
+        self
+    }
+
+    /// With another time tolerance.
+    #[must_use]
+    pub const fn with_time_tolerance(mut self, t: T) -> Self {
+        self.time_tolerance = t;
+        self
+    }
+
+    /// With another iteration limit.
+    #[must_use]
+    pub const fn with_max_iterations(mut self, n: u32) -> Self {
+        self.max_iterations = n;
+        self
+    }
+
+    /// With another bound choice.
+    #[must_use]
+    pub const fn with_bound(mut self, b: BoundChoice) -> Self {
+        self.bound = b;
+        self
+    }
+
+    /// Checks the parameters.
+    ///
+    /// # Errors
+    /// [`CaError::InvalidParameter`] naming a tolerance that is negative, NaN
+    /// or infinite, or a zero iteration limit.
+    pub fn validate(&self) -> Result<(), CaError> {
+        let ok = |x: T| x.is_finite() && x >= T::ZERO;
+        if !ok(self.contact_distance) {
+            return Err(CaError::InvalidParameter("contact_distance"));
+        }
+        if !ok(self.time_tolerance) {
+            return Err(CaError::InvalidParameter("time_tolerance"));
+        }
+        if self.max_iterations == 0 {
+            return Err(CaError::InvalidParameter("max_iterations"));
+        }
+        Ok(())
+    }
+}
+
+/// Why a conservative-advancement query could not run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum CaError {
+    /// A parameter is out of range (named).
+    InvalidParameter(&'static str),
+    /// The two motions are over different time intervals.
+    IntervalMismatch,
+    /// An input was rejected by the core (a motion restricted to a
+    /// sub-interval, a bounding ball, a vertex set).
+    Input(crate::InputError),
+}
+
+impl fmt::Display for CaError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::InvalidParameter(p) => write!(f, "parameter `{p}` is out of range"),
+            Self::IntervalMismatch => f.write_str("the two motions have different intervals"),
+            Self::Input(e) => write!(f, "invalid input: {e}"),
+        }
+    }
+}
+
+impl core::error::Error for CaError {}
+
+impl From<crate::InputError> for CaError {
+    fn from(e: crate::InputError) -> Self {
+        Self::Input(e)
+    }
+}

@@ -1,0 +1,529 @@
+//! GJK distance between convex bodies given by support maps.
+//!
+//! The Gilbert-Johnson-Keerthi algorithm (IEEE J. Robotics and Automation
+//! 4(2), 1988, [doi:10.1109/56.2083](https://doi.org/10.1109/56.2083)) finds
+//! the point `v` of the Minkowski difference `A - B` nearest the origin; its
+//! length is the distance. Each iteration asks the support maps for the
+//! point `w = s_A(-v) - s_B(v)` of `A - B` farthest along `-v`, adds it to a
+//! simplex of at most four points and replaces `v` by the simplex's point
+//! nearest the origin (signed volumes, Montanari et al. 2017). Since every
+//! `x` in `A - B` has `x . v >= w . v`, each iteration also proves the lower
+//! bound `w . v / |v|` of the distance (van den Bergen, "A fast and robust
+//! GJK implementation for collision detection of convex objects", J.
+//! Graphics Tools 4(2), 1999,
+//! [doi:10.1080/10867651.1999.10487502](https://doi.org/10.1080/10867651.1999.10487502)).
+
+use crate::error::{check_components, InputError, Quantity};
+use crate::rounding::gamma;
+use crate::{Float, Pose, Vec3};
+
+use super::simplex::nearest;
+
+/// A convex body given by its support map.
+///
+/// `support(dir)` returns a point of the body farthest along `dir`: a
+/// maximiser of `x . dir`. `dir` need not be unit length, and may be zero
+/// (any point of the body is then a valid answer).
+///
+/// [`gjk_distance`]'s certified lower bound needs to know how far a
+/// floating-point support map may fall short. [`support_slack`] is a bound
+/// `e >= 0` such that, for every `dir` with `|dir| <= 2`,
+/// `max_{x in body} x . dir <= support(dir) . dir + e`. The default is 0,
+/// which is right for maps evaluated exactly; an implementation that rounds
+/// must override it or the lower bound is not certified.
+///
+/// [`support_slack`]: SupportMap::support_slack
+///
+/// ```
+/// use motion_bound::{gjk_distance, GjkParams, SupportMap, Vec3};
+/// /// A ball, whose support is exact enough to ignore here.
+/// struct Ball { centre: Vec3<f64>, radius: f64 }
+/// impl SupportMap<f64> for Ball {
+///     fn support(&self, dir: Vec3<f64>) -> Vec3<f64> {
+///         self.centre + dir.normalize_or(Vec3::ZERO) * self.radius
+///     }
+///     fn support_slack(&self) -> f64 {
+///         8.0 * f64::EPSILON * (self.centre.norm_l1() + self.radius)
+///     }
+/// }
+/// let a = Ball { centre: Vec3::ZERO, radius: 1.0 };
+/// let b = Ball { centre: Vec3::new(3.0, 0.0, 0.0), radius: 1.0 };
+/// // Smooth bodies converge only asymptotically: loosen the tolerance.
+/// let params = GjkParams { rel_tol: 1e-6, ..GjkParams::default() };
+/// let r = gjk_distance(&a, &b, &params);
+/// assert!(r.lower_bound <= 1.0 && r.distance >= r.lower_bound);
+/// assert!(r.distance - 1.0 < 1e-5);
+/// ```
+pub trait SupportMap<T: Float> {
+    /// A point of the body farthest along `dir`.
+    fn support(&self, dir: Vec3<T>) -> Vec3<T>;
+
+    /// A bound of the support's shortfall for directions of length at most
+    /// 2 (see the trait documentation). Default 0: exact.
+    fn support_slack(&self) -> T {
+        T::ZERO
+    }
+}
+
+impl<T: Float, S: SupportMap<T> + ?Sized> SupportMap<T> for &S {
+    #[inline]
+    fn support(&self, dir: Vec3<T>) -> Vec3<T> {
+        (**self).support(dir)
+    }
+    #[inline]
+    fn support_slack(&self) -> T {
+        (**self).support_slack()
+    }
+}
+
+/// A convex polytope: the convex hull of borrowed body-frame vertices `r_i`,
+/// placed in the world by a [`Pose`] as `R r_i + x`.
+///
+/// The support map works in the body frame: it maps `dir` by `R^T`, takes
+/// the vertex with the largest dot product (the first on ties; `O(N)`, no
+/// hill climbing), and places it with [`Pose::transform_point`].
+///
+/// # Support slack
+/// Let `m` be the largest `|R_kl|`, `rho >= max_i |r_i|_1` (computed and
+/// rounded up) and `u` the unit roundoff. Rounding in `R^T dir`
+/// (`gamma_3 m |dir|_1` per component), in the dot products
+/// (`gamma_3 |r_i|_1 |R^T dir|_inf` each) and in `R r_j + x`
+/// (`gamma_4 (m rho + |x|_inf)` per coordinate) make the returned point fall
+/// short of the exact hull of the `R r_i + x` by at most
+/// `|dir|_1 gamma_4 (6 m rho + |x|_inf)`; for `|dir| <= 2`, `|dir|_1 < 4`,
+/// so [`support_slack`](SupportMap::support_slack) returns
+/// `4 gamma_4 (6 m rho + |x|_inf)`, inflated by `1 + gamma_8` for its own
+/// rounding, plus `64 eta (1 + m)(1 + rho)` for underflow. `R` need not be
+/// orthonormal: the identity `(R r) . d = r . (R^T d)` holds for any matrix.
+///
+/// ```
+/// use motion_bound::{ConvexPolytope, Pose, SupportMap, Vec3};
+/// let square = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 0.0]];
+/// let body = ConvexPolytope::try_new(&square, Pose::from_translation(Vec3::new(0.0, 0.0, 5.0)))?;
+/// assert_eq!(body.support(Vec3::new(1.0, 1.0, 0.0)), Vec3::new(1.0, 1.0, 5.0));
+/// assert!(body.support_slack() < 1e-13);
+/// # Ok::<(), motion_bound::InputError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ConvexPolytope<'a, T> {
+    vertices: &'a [[T; 3]],
+    pose: Pose<T>,
+    rho: T,
+    slack: T,
+}
+
+impl<'a, T: Float> ConvexPolytope<'a, T> {
+    /// Validates the vertices and the pose (`O(N)`).
+    ///
+    /// # Errors
+    /// [`InputError::EmptyVertexSet`]; [`InputError::NonFinite`] /
+    /// [`InputError::TooLarge`] with [`Quantity::Vertex`] naming the first
+    /// bad vertex, or with [`Quantity::Pose`] for the pose.
+    pub fn try_new(vertices: &'a [[T; 3]], pose: Pose<T>) -> Result<Self, InputError> {
+        if vertices.is_empty() {
+            return Err(InputError::EmptyVertexSet);
+        }
+        let mut rho = T::ZERO;
+        for (i, r) in vertices.iter().enumerate() {
+            check_components(*r, Quantity::Vertex(i))?;
+            rho = rho.max_nan(Vec3::from_array(*r).norm_l1());
+        }
+        // `fl(|r|_1)` may be below `|r|_1` by `gamma_2 |r|_1`.
+        let rho = rho * (T::ONE + gamma::<T>(3));
+        Self::placed(vertices, rho, pose)
+    }
+
+    /// The same vertices at another pose, without re-reading them (`O(1)`):
+    /// what a conservative-advancement loop does at every step.
+    ///
+    /// # Errors
+    /// [`InputError::NonFinite`] / [`InputError::TooLarge`] with
+    /// [`Quantity::Pose`].
+    pub fn with_pose(&self, pose: Pose<T>) -> Result<Self, InputError> {
+        Self::placed(self.vertices, self.rho, pose)
+    }
+
+    fn placed(vertices: &'a [[T; 3]], rho: T, pose: Pose<T>) -> Result<Self, InputError> {
+        for row in pose.rotation {
+            check_components(row, Quantity::Pose)?;
+        }
+        check_components(pose.translation.to_array(), Quantity::Pose)?;
+        let m = pose.rotation_max_abs();
+        let x = pose.translation.max_abs();
+        let six = T::from_u32(6);
+        let slack = T::from_u32(4) * gamma::<T>(4) * (six * m * rho + x) * (T::ONE + gamma::<T>(8))
+            + T::from_u32(64) * T::ETA * (T::ONE + m) * (T::ONE + rho);
+        Ok(Self {
+            vertices,
+            pose,
+            rho,
+            slack,
+        })
+    }
+
+    /// The body-frame vertices.
+    #[inline]
+    #[must_use]
+    pub const fn vertices(&self) -> &'a [[T; 3]] {
+        self.vertices
+    }
+
+    /// The placement.
+    #[inline]
+    #[must_use]
+    pub const fn pose(&self) -> &Pose<T> {
+        &self.pose
+    }
+}
+
+impl<T: Float> SupportMap<T> for ConvexPolytope<'_, T> {
+    fn support(&self, dir: Vec3<T>) -> Vec3<T> {
+        let d = self.pose.inverse_transform_vector(dir);
+        let mut best = Vec3::from_array(self.vertices[0]);
+        let mut best_dot = best.dot(d);
+        for r in &self.vertices[1..] {
+            let r = Vec3::from_array(*r);
+            let s = r.dot(d);
+            if s > best_dot {
+                best = r;
+                best_dot = s;
+            }
+        }
+        self.pose.transform_point(best)
+    }
+
+    #[inline]
+    fn support_slack(&self) -> T {
+        self.slack
+    }
+}
+
+/// Termination controls for [`gjk_distance`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GjkParams<T> {
+    /// Stop when the gap between the current estimate `|v|` and the
+    /// iteration's lower bound `w . v / |v|` is at most `rel_tol |v|`
+    /// (van den Bergen's test `|v|^2 - v . w <= rel_tol |v|^2`). Default
+    /// `2^8 u` (`2.8e-14` for `f64`, `1.5e-5` for `f32`).
+    pub rel_tol: T,
+    /// The most support-point iterations. Default 64, far more than a
+    /// polytope needs (GJK ends after finitely many steps on polytopes);
+    /// smooth bodies converge only asymptotically.
+    pub max_iterations: u32,
+}
+
+impl<T: Float> Default for GjkParams<T> {
+    fn default() -> Self {
+        Self {
+            rel_tol: T::from_u32(256) * T::UNIT_ROUNDOFF,
+            max_iterations: 64,
+        }
+    }
+}
+
+/// What [`gjk_distance`] found.
+///
+/// # Guarantees
+/// * **`lower_bound` is certified.** For every `a` in `A` and `b` in `B`,
+///   `(b - a) . direction >= lower_bound` and `|b - a| >= lower_bound`,
+///   with every rounding of the final check accounted for and the support
+///   maps' shortfall covered by their
+///   [`support_slack`](SupportMap::support_slack). It is computed from the
+///   returned `direction` itself (two extra support calls), so it holds
+///   whatever the iteration did, including at the iteration cap. It is 0
+///   when nothing positive can be certified (intersection, touching, NaN).
+/// * **`distance` is an estimate from above.** It is `|on_b - on_a|` for
+///   convex combinations of support points, so it is at least the true
+///   distance up to rounding and support slack. It **can over-estimate** the
+///   true distance: when `converged` is true and the bodies are apart, by
+///   about `rel_tol * distance` (plus rounding of the test); when
+///   `converged` is false (iteration cap, or no progress under rounding),
+///   by an amount that is not bounded. A conservative-advancement step must
+///   therefore use `lower_bound` (an over-estimate of the distance makes the
+///   step too long), and `direction` as its `n`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct GjkResult<T> {
+    /// The estimated distance `|on_b - on_a|` (0 when intersecting).
+    pub distance: T,
+    /// A certified lower bound of the distance, and of the separation
+    /// along `direction` (see the type's documentation).
+    pub lower_bound: T,
+    /// The witness point on `A` (a common point when intersecting).
+    pub on_a: Vec3<T>,
+    /// The witness point on `B` (equal to `on_a` when intersecting).
+    pub on_b: Vec3<T>,
+    /// The unit direction from `A` towards `B` (`-v / |v|`), or `None` when
+    /// the bodies intersect or are too close for a direction.
+    pub direction: Option<Vec3<T>>,
+    /// The origin was found inside (or within rounding of) `A - B`.
+    pub intersecting: bool,
+    /// Termination by the tolerance test, a repeated support point or an
+    /// intersection, rather than by the iteration cap or a stall.
+    pub converged: bool,
+    /// The number of support-point iterations taken.
+    pub iterations: u32,
+}
+
+/// The distance between two convex bodies by GJK, with a certified lower
+/// bound (see [`GjkResult`] for exactly what is guaranteed).
+///
+/// Never loops forever (at most `params.max_iterations` iterations) and
+/// never panics; duplicate points, flat or collinear vertex sets and single
+/// points are ordinary input. If a support map returns NaN the result has a
+/// NaN `distance`, a zero `lower_bound` and `converged == false`.
+///
+/// ```
+/// use motion_bound::{gjk_distance, ConvexPolytope, GjkParams, Pose, Vec3};
+/// let cube: Vec<[f64; 3]> = (0..8)
+///     .map(|i| [(i & 1) as f64, (i >> 1 & 1) as f64, (i >> 2 & 1) as f64])
+///     .collect();
+/// let a = ConvexPolytope::try_new(&cube, Pose::IDENTITY)?;
+/// let b = ConvexPolytope::try_new(&cube, Pose::from_translation(Vec3::new(3.0, 0.5, 0.0)))?;
+/// let r = gjk_distance(&a, &b, &GjkParams::default());
+/// assert!(r.converged && !r.intersecting);
+/// assert!((r.distance - 2.0).abs() < 1e-12);
+/// assert!(r.lower_bound <= 2.0 && r.lower_bound > 2.0 - 1e-12);
+/// let n = r.direction.unwrap();
+/// assert!((n.x - 1.0).abs() < 1e-12);
+///
+/// let c = ConvexPolytope::try_new(&cube, Pose::from_translation(Vec3::new(0.5, 0.5, 0.5)))?;
+/// let r = gjk_distance(&a, &c, &GjkParams::default());
+/// assert!(r.intersecting && r.distance == 0.0 && r.lower_bound == 0.0);
+/// # Ok::<(), motion_bound::InputError>(())
+/// ```
+#[must_use]
+pub fn gjk_distance<T, A, B>(a: &A, b: &B, params: &GjkParams<T>) -> GjkResult<T>
+where
+    T: Float,
+    A: SupportMap<T> + ?Sized,
+    B: SupportMap<T> + ?Sized,
+{
+    let zero = T::ZERO;
+    let u = T::UNIT_ROUNDOFF;
+    let e0 = Vec3::new(T::ONE, zero, zero);
+    let mut pa = [Vec3::ZERO; 4];
+    let mut pb = [Vec3::ZERO; 4];
+    let mut w = [Vec3::ZERO; 4];
+    pa[0] = a.support(e0);
+    pb[0] = b.support(-e0);
+    w[0] = pa[0] - pb[0];
+    let mut n = 1;
+    let mut lambda = [T::ONE, zero, zero, zero];
+    let mut v = w[0];
+    let mut vv = v.length_squared();
+    let mut iterations = 0;
+    let mut converged = false;
+    let mut intersecting = vv == zero;
+    let mut max_w2 = vv;
+    if intersecting {
+        converged = true;
+    }
+    while !intersecting && !vv.is_nan() && iterations < params.max_iterations {
+        iterations += 1;
+        let (sa, sb) = (a.support(-v), b.support(v));
+        let wk = sa - sb;
+        if vv - v.dot(wk) <= params.rel_tol * vv || w[..n].contains(&wk) {
+            converged = true;
+            break;
+        }
+        let mut trial = w;
+        trial[n] = wk;
+        let r = nearest(&trial[..=n]);
+        if r.contains_origin {
+            pa[n] = sa;
+            pb[n] = sb;
+            n += 1;
+            lambda = r.lambda;
+            intersecting = true;
+            converged = true;
+            break;
+        }
+        let r_vv = r.v.length_squared();
+        if !(r_vv < vv) {
+            break; // no progress under rounding: keep the previous simplex
+        }
+        pa[n] = sa;
+        pb[n] = sb;
+        w[n] = wk;
+        max_w2 = max_w2.max_nan(wk.length_squared());
+        // Keep the support set, compacted.
+        let mut k = 0;
+        for i in 0..=n {
+            if r.mask & (1 << i) != 0 {
+                pa[k] = pa[i];
+                pb[k] = pb[i];
+                w[k] = w[i];
+                lambda[k] = r.lambda[i];
+                k += 1;
+            }
+        }
+        n = k;
+        v = r.v;
+        vv = r_vv;
+        // The origin within rounding of the simplex: touching or overlapping.
+        let tiny = T::from_u32(64) * u;
+        if vv <= tiny * tiny * max_w2 {
+            intersecting = true;
+            converged = true;
+        }
+    }
+    let mut on_a = Vec3::ZERO;
+    let mut on_b = Vec3::ZERO;
+    for i in 0..n {
+        on_a = on_a + pa[i] * lambda[i];
+        on_b = on_b + pb[i] * lambda[i];
+    }
+    if intersecting {
+        let m = on_a.lerp(on_b, T::HALF);
+        return GjkResult {
+            distance: zero,
+            lower_bound: zero,
+            on_a: m,
+            on_b: m,
+            direction: None,
+            intersecting,
+            converged,
+            iterations,
+        };
+    }
+    let distance = (on_b - on_a).length();
+    let direction = if v.length() >= T::TINY_LENGTH {
+        (-v).try_normalize()
+    } else {
+        None
+    };
+    let lower_bound = direction.map_or(zero, |d| certified_separation(a, b, d).min_nan(distance));
+    GjkResult {
+        distance,
+        lower_bound: if lower_bound > zero {
+            lower_bound
+        } else {
+            zero
+        },
+        on_a,
+        on_b,
+        direction,
+        intersecting,
+        converged,
+        iterations,
+    }
+}
+
+/// A certified lower bound of `min_{a, b} (b - a) . n` and, divided by an
+/// upper bound of `|n|`, of the distance, for a computed unit vector `n`
+/// (`|n| <= 1 + gamma_6`). With `alpha = fl(s_A(n) . n)` and
+/// `beta = fl(s_B(-n) . n)`:
+/// `max_a a . n <= alpha + gamma_3 sum|s_A(n)_k n_k| + e_A` and
+/// `min_b b . n >= beta - gamma_3 sum|s_B(-n)_k n_k| - e_B`, so the
+/// separation is at least `fl(beta - alpha) - M` with `M` the rounding of
+/// the subtraction (`u |fl(beta - alpha)|`) plus those terms, `M` inflated by
+/// `1 + gamma_4` for its own evaluation and by `8 eta` for underflow; the
+/// final subtraction and the division by `1 + gamma_6` are rounded down by
+/// the factor `1 - gamma_8`.
+fn certified_separation<T, A, B>(a: &A, b: &B, n: Vec3<T>) -> T
+where
+    T: Float,
+    A: SupportMap<T> + ?Sized,
+    B: SupportMap<T> + ?Sized,
+{
+    let (sa, sb) = (a.support(n), b.support(-n));
+    let alpha = sa.dot(n);
+    let beta = sb.dot(n);
+    let delta = beta - alpha;
+    let slack = (a.support_slack() + b.support_slack()) * (T::ONE + gamma::<T>(4));
+    let m =
+        (T::UNIT_ROUNDOFF * delta.abs() + gamma::<T>(3) * (sa.dot_abs(n) + sb.dot_abs(n)) + slack)
+            * (T::ONE + gamma::<T>(4))
+            + T::from_u32(8) * T::ETA;
+    let sep = delta - m;
+    if sep > T::ZERO {
+        sep * (T::ONE - gamma::<T>(8))
+    } else {
+        T::ZERO
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{gjk_distance, ConvexPolytope, GjkParams, SupportMap};
+    use crate::{InputError, Pose, Quantity, Vec3};
+
+    #[test]
+    fn rejects_bad_input() {
+        let empty: [[f64; 3]; 0] = [];
+        assert_eq!(
+            ConvexPolytope::try_new(&empty, Pose::IDENTITY),
+            Err(InputError::EmptyVertexSet),
+            "empty"
+        );
+        let bad = [[0.0, f64::NAN, 0.0]];
+        assert_eq!(
+            ConvexPolytope::try_new(&bad, Pose::IDENTITY),
+            Err(InputError::NonFinite(Quantity::Vertex(0))),
+            "NaN vertex"
+        );
+        let ok = [[0.0; 3]];
+        let mut pose = Pose::IDENTITY;
+        pose.translation.z = f64::INFINITY;
+        assert_eq!(
+            ConvexPolytope::try_new(&ok, pose),
+            Err(InputError::NonFinite(Quantity::Pose)),
+            "infinite translation"
+        );
+    }
+
+    #[test]
+    fn single_points_and_duplicates() {
+        let p = [[1.0f64, 2.0, 3.0]];
+        let q = [[1.0f64, 2.0, 7.0], [1.0, 2.0, 7.0], [1.0, 2.0, 7.0]];
+        let a = ConvexPolytope::try_new(&p, Pose::IDENTITY).unwrap();
+        let b = ConvexPolytope::try_new(&q, Pose::IDENTITY).unwrap();
+        let r = gjk_distance(&a, &b, &GjkParams::default());
+        assert_eq!(r.distance, 4.0, "two points");
+        assert!(r.converged && !r.intersecting, "converged");
+        assert!(
+            r.lower_bound <= 4.0 && r.lower_bound > 4.0 - 1e-12,
+            "bound {}",
+            r.lower_bound
+        );
+        let r = gjk_distance(&a, &a, &GjkParams::default());
+        assert!(r.intersecting && r.distance == 0.0, "a point and itself");
+    }
+
+    #[test]
+    fn nan_support_terminates() {
+        struct Nan;
+        impl SupportMap<f64> for Nan {
+            fn support(&self, _: Vec3<f64>) -> Vec3<f64> {
+                Vec3::new(f64::NAN, 0.0, 0.0)
+            }
+        }
+        let r = gjk_distance(&Nan, &Nan, &GjkParams::default());
+        assert!(
+            r.distance.is_nan() && r.lower_bound == 0.0 && !r.converged,
+            "{r:?}"
+        );
+    }
+
+    #[test]
+    fn with_pose_keeps_vertices() {
+        let tet = [
+            [0.0f32, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+        ];
+        let a = ConvexPolytope::try_new(&tet, Pose::IDENTITY).unwrap();
+        let b = a
+            .with_pose(Pose::from_translation(Vec3::new(0.0, 0.0, 3.0)))
+            .unwrap();
+        assert_eq!(b.vertices(), &tet, "same slice");
+        let r = gjk_distance(&a, &b, &GjkParams::default());
+        assert!(
+            (r.distance - 2.0).abs() < 1e-6,
+            "f32 distance {}",
+            r.distance
+        );
+        assert!(r.lower_bound <= 2.0, "f32 bound {}", r.lower_bound);
+    }
+}

@@ -1,0 +1,105 @@
+//! Distance queries between triangles and convex polytopes.
+//!
+//! Conservative advancement needs, at each step, the distance `d` between
+//! the two bodies and the closest direction `n`; this module supplies both:
+//! [`closest`] for exact triangle-level queries (the ground truth and the
+//! per-triangle-pair query of a bounding-volume traversal), [`gjk`] for
+//! convex polytopes. Everything is `no_std`, allocation-free and generic over
+//! [`Float`](crate::Float).
+
+// `!(x > 0)` is written on purpose throughout: unlike `x <= 0` it is true
+// for NaN, which must take the degenerate branch.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
+pub(crate) mod closest;
+#[cfg(feature = "testkit")]
+pub(crate) mod exact;
+pub(crate) mod gjk;
+mod intersect;
+mod predicates;
+mod scale;
+mod simplex;
+
+/// Hand-made triangle pairs shared by the unit tests of both intersection
+/// tests (`exact` with exact predicates, `intersect` with filtered ones):
+/// every case against [`HAND_MADE_BASE`], with the expected answer.
+#[cfg(test)]
+pub(crate) const HAND_MADE_BASE: [[f64; 3]; 3] =
+    [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 2.0, 0.0]];
+
+/// See [`HAND_MADE_BASE`].
+#[cfg(test)]
+pub(crate) const HAND_MADE_CASES: [(&str, [[f64; 3]; 3], bool); 16] = [
+    (
+        "piercing",
+        [[0.5, 0.5, -1.0], [0.5, 0.5, 1.0], [3.0, 3.0, 0.5]],
+        true,
+    ),
+    (
+        "above",
+        [[0.5, 0.5, 0.1], [0.6, 0.5, 1.0], [3.0, 3.0, 0.5]],
+        false,
+    ),
+    (
+        "shared vertex",
+        [[0.0, 0.0, 0.0], [-1.0, 0.0, 1.0], [0.0, -1.0, 1.0]],
+        true,
+    ),
+    (
+        "shared edge",
+        [[0.0, 0.0, 0.0], [2.0, 0.0, 0.0], [1.0, -1.0, 1.0]],
+        true,
+    ),
+    (
+        "vertex on face",
+        [[0.5, 0.5, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 1.0]],
+        true,
+    ),
+    (
+        "vertex on edge",
+        [[1.0, 0.0, 0.0], [1.0, -1.0, 1.0], [2.0, -1.0, 1.0]],
+        true,
+    ),
+    (
+        "standing outside",
+        [[3.0, 3.0, 0.0], [0.5, 0.5, 1.0], [0.6, 0.4, 1.0]],
+        false,
+    ),
+    (
+        "coplanar overlap",
+        [[1.0, 1.0, 0.0], [3.0, 1.0, 0.0], [1.0, 3.0, 0.0]],
+        true,
+    ),
+    (
+        "coplanar inside",
+        [[0.1, 0.1, 0.0], [0.5, 0.1, 0.0], [0.1, 0.5, 0.0]],
+        true,
+    ),
+    (
+        "coplanar apart",
+        [[1.5, 1.5, 0.0], [3.0, 1.5, 0.0], [1.5, 3.0, 0.0]],
+        false,
+    ),
+    (
+        "coplanar touching",
+        [[1.0, 1.0, 0.0], [3.0, 1.0, 0.0], [1.0, 3.0, 0.0]],
+        true,
+    ),
+    (
+        "linked",
+        [[1.0, 0.5, -2.0], [1.0, 0.5, 2.0], [1.0, -3.0, 0.0]],
+        true,
+    ),
+    (
+        "segment through face",
+        [[0.5, 0.5, -1.0], [0.5, 0.5, 0.0], [0.5, 0.5, 1.0]],
+        true,
+    ),
+    (
+        "segment in plane, outside",
+        [[3.0, 0.0, 0.0], [4.0, 0.0, 0.0], [5.0, 0.0, 0.0]],
+        false,
+    ),
+    ("point in face", [[0.5, 0.5, 0.0]; 3], true),
+    ("point off face", [[0.5, 0.5, 0.5]; 3], false),
+];

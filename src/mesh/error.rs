@@ -1,0 +1,163 @@
+//! Typed errors for meshes: construction, transformation and file parsing.
+//!
+//! [`MeshError`] is its own type rather than more variants of
+//! [`InputError`]: `InputError` is the small `Copy` error of the `no_std`,
+//! allocation-free bound API, and every user of the bounds matches on it;
+//! mesh errors carry line numbers and parser details that only mesh users
+//! need. A bad vertex is still reported as the [`InputError`] the bounds
+//! would give for it ([`MeshError::Vertex`]), so the two agree on what a
+//! valid body point is.
+
+use core::fmt;
+
+use crate::InputError;
+
+/// Why a mesh was rejected.
+///
+/// Returned by [`TriMesh::try_new`](crate::TriMesh::try_new), the
+/// transformations ([`TriMesh::translated`](crate::TriMesh::translated), ...)
+/// and the file readers. No function of the mesh module panics on bad input.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum MeshError {
+    /// The mesh has no vertex.
+    NoVertices,
+    /// The mesh has no triangle.
+    NoTriangles,
+    /// A vertex is not finite or exceeds
+    /// [`Float::MAX_INPUT`](crate::Float::MAX_INPUT): the error the bounds'
+    /// [`VertexSet::try_new`](crate::VertexSet::try_new) gives for it, with
+    /// [`Quantity::Vertex`](crate::Quantity::Vertex) naming the first bad
+    /// vertex.
+    Vertex(InputError),
+    /// A triangle names a vertex that does not exist.
+    IndexOutOfRange {
+        /// The triangle's index.
+        triangle: usize,
+        /// The offending vertex index.
+        index: u32,
+        /// The number of vertices.
+        vertex_count: usize,
+    },
+    /// A scale factor that is zero, negative or not finite (a negative factor
+    /// would mirror the mesh and turn its outward winding inward).
+    InvalidScale,
+    /// An OFF file could not be read.
+    Off(OffError),
+    /// An OBJ file could not be read.
+    #[cfg(feature = "obj")]
+    Obj(crate::mesh::obj::ObjError),
+}
+
+/// Where and why an OFF file could not be read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct OffError {
+    /// The 1-based line number (`0` for an empty input).
+    pub line: usize,
+    /// What is wrong on that line.
+    pub kind: OffErrorKind,
+}
+
+/// What is wrong in an OFF file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum OffErrorKind {
+    /// The first content line is not `OFF` (or `COFF`, `NOFF`, `CNOFF`).
+    BadHeader,
+    /// The counts line is not `V F E` with non-negative integers.
+    BadCounts,
+    /// A vertex line has fewer than three numbers, or a token that is not a
+    /// number.
+    BadVertexLine,
+    /// A plain `OFF` vertex line has more than three numbers.
+    TrailingTokens,
+    /// A parsed vertex is not finite or too large (see [`MeshError::Vertex`]).
+    BadVertex(InputError),
+    /// A face line does not start with a vertex count, or has fewer indices
+    /// than it announces, or an index that is not a non-negative integer.
+    BadFaceLine,
+    /// A face with fewer than three vertices.
+    FaceTooSmall(usize),
+    /// A face names a vertex beyond the vertex count.
+    IndexOutOfRange {
+        /// The offending index.
+        index: u32,
+        /// The number of vertices.
+        vertex_count: usize,
+    },
+    /// The file ends before all announced vertices and faces.
+    UnexpectedEnd,
+    /// Content follows the last announced face.
+    TrailingContent,
+}
+
+impl fmt::Display for MeshError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NoVertices => f.write_str("mesh has no vertex"),
+            Self::NoTriangles => f.write_str("mesh has no triangle"),
+            Self::Vertex(e) => write!(f, "invalid mesh vertex: {e}"),
+            Self::IndexOutOfRange {
+                triangle,
+                index,
+                vertex_count,
+            } => write!(
+                f,
+                "triangle {triangle} names vertex {index}, but the mesh has {vertex_count} vertices"
+            ),
+            Self::InvalidScale => f.write_str("scale factor is not positive and finite"),
+            Self::Off(e) => write!(f, "{e}"),
+            #[cfg(feature = "obj")]
+            Self::Obj(e) => write!(f, "{e}"),
+        }
+    }
+}
+
+impl fmt::Display for OffError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "OFF line {}: {}", self.line, self.kind)
+    }
+}
+
+impl fmt::Display for OffErrorKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::BadHeader => f.write_str("expected the header `OFF`"),
+            Self::BadCounts => f.write_str("expected the counts `V F E`"),
+            Self::BadVertexLine => f.write_str("expected three coordinates `x y z`"),
+            Self::TrailingTokens => f.write_str("more than three coordinates on a vertex line"),
+            Self::BadVertex(e) => write!(f, "{e}"),
+            Self::BadFaceLine => f.write_str("expected a face `k i_0 ... i_(k-1)`"),
+            Self::FaceTooSmall(k) => write!(f, "a face needs at least 3 vertices, not {k}"),
+            Self::IndexOutOfRange {
+                index,
+                vertex_count,
+            } => write!(
+                f,
+                "vertex index {index} out of range for {vertex_count} vertices"
+            ),
+            Self::UnexpectedEnd => f.write_str("file ends before the announced vertices and faces"),
+            Self::TrailingContent => f.write_str("content after the last announced face"),
+        }
+    }
+}
+
+impl core::error::Error for MeshError {
+    fn source(&self) -> Option<&(dyn core::error::Error + 'static)> {
+        match self {
+            Self::Vertex(e) => Some(e),
+            Self::Off(e) => Some(e),
+            #[cfg(feature = "obj")]
+            Self::Obj(e) => Some(e),
+            _ => None,
+        }
+    }
+}
+
+impl core::error::Error for OffError {}
+
+impl From<OffError> for MeshError {
+    fn from(e: OffError) -> Self {
+        Self::Off(e)
+    }
+}

@@ -1,0 +1,16 @@
+//! Triangle meshes for the bodies of a CA time-of-impact engine: an owned,
+//! validated [`TriMesh`], its topology checks, and OFF (and, with the `obj`
+//! feature, OBJ) input.
+
+mod error;
+#[cfg(feature = "obj")]
+mod obj;
+mod off;
+mod topology;
+mod trimesh;
+
+pub use error::{MeshError, OffError, OffErrorKind};
+#[cfg(feature = "obj")]
+pub use obj::ObjError;
+pub use topology::EdgeReport;
+pub use trimesh::TriMesh;

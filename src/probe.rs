@@ -1,0 +1,186 @@
+//! Directed bounds for one motion along one direction, for many bodies:
+//! vertex sets, bounding balls, body summaries.
+
+use crate::bound::Projection;
+use crate::evq::{arc_scan, full_turn_scan};
+use crate::nevq::nevq_speed_from;
+use crate::rounding::{assemble, evq_rotational_up, gamma, nevq_rotational_up};
+use crate::{
+    BodySummary, BoundKind, BoundingBall, Direction, Float, PreparedMotion, SweptArc, Vec3,
+    VertexSet,
+};
+
+/// The per-direction quantities of one motion (`v.n`, `c = n x w` and the
+/// rotation-plane basis `e1 = c/|c|`, `e2 = w^ x e1`), computed once by
+/// [`PreparedMotion::probe`] and shared by every bound along that direction.
+///
+/// This is what a bounding-volume traversal uses: one probe per body per
+/// node pair, then `O(1)` per [`BoundingBall`] and no trigonometry at all.
+/// Every method returns the same rounded-up speed bound as the one-shot
+/// functions ([`evq`](crate::evq), [`nevq`](crate::nevq)) would.
+#[derive(Clone, Copy, Debug)]
+pub struct DirectedProbe<T> {
+    p: Projection<T>,
+    arc: SweptArc<T>,
+    /// The rotation is trusted (`|w|` and `|c|` above `TINY_LENGTH`).
+    usable: bool,
+    e1: Vec3<T>,
+    e2: Vec3<T>,
+}
+
+impl<T: Float> PreparedMotion<T> {
+    /// The probe of this motion along `n`.
+    #[inline]
+    #[must_use]
+    pub fn probe(&self, n: Direction<T>) -> DirectedProbe<T> {
+        let p = Projection::new(self.motion(), n);
+        let arc = *self.arc();
+        let usable = arc.rotating && p.c_norm > T::TINY_LENGTH;
+        let (e1, e2) = if usable && !arc.full_turn {
+            let e1 = Vec3::new(p.c.x / p.c_norm, p.c.y / p.c_norm, p.c.z / p.c_norm);
+            (e1, arc.axis.cross(e1))
+        } else {
+            (Vec3::ZERO, Vec3::ZERO)
+        };
+        DirectedProbe {
+            p,
+            arc,
+            usable,
+            e1,
+            e2,
+        }
+    }
+}
+
+impl<T: Float> DirectedProbe<T> {
+    /// An upper bound of `|v.n|`, the linear part shared by both bounds.
+    #[inline]
+    #[must_use]
+    pub fn linear_speed(&self) -> T {
+        self.p.linear_up()
+    }
+
+    /// The NEVQ speed bound of a body with this summary (as [`nevq_speed`](crate::nevq_speed)).
+    #[inline]
+    #[must_use]
+    pub fn nevq_speed(&self, body: &BodySummary<T>) -> T {
+        nevq_speed_from(&self.p, body.max_radius())
+    }
+
+    /// The EVQ speed bound of a vertex set (as [`evq_speed`](crate::evq_speed)).
+    #[must_use]
+    pub fn evq_speed(&self, body: &VertexSet<'_, T>) -> T {
+        self.evq_speed_points(body.vertices(), body.summary().max_radius())
+    }
+
+    /// EVQ over `points`, all within `r_hat` of the rotation centre (`r_hat`
+    /// rounded up as by `rounding::radius_up`).
+    #[inline]
+    pub(crate) fn evq_speed_points(&self, points: &[[T; 3]], r_hat: T) -> T {
+        let nevq = nevq_speed_from(&self.p, r_hat);
+        match self.extremal_sq(points, r_hat * r_hat) {
+            None => nevq,
+            Some(e_sq) => {
+                let rot = evq_rotational_up(
+                    self.p.c_norm,
+                    e_sq.sqrt(),
+                    self.arc.theta_m,
+                    self.p.w_l1,
+                    r_hat,
+                );
+                assemble(self.p.linear_up(), rot).min_nan(nevq)
+            }
+        }
+    }
+
+    /// NEVQ for points within `r_hat` of the rotation centre.
+    #[cfg(feature = "alloc")]
+    #[inline]
+    pub(crate) fn nevq_speed_radius(&self, r_hat: T) -> T {
+        nevq_speed_from(&self.p, r_hat)
+    }
+
+    /// The speed bound of kind `kind` for a vertex set.
+    #[inline]
+    #[must_use]
+    pub fn speed(&self, body: &VertexSet<'_, T>, kind: BoundKind) -> T {
+        match kind {
+            BoundKind::Nevq => self.nevq_speed(&body.summary()),
+            BoundKind::Evq => self.evq_speed(body),
+        }
+    }
+
+    /// The speed bound of kind `kind` for every point of a ball (relative to
+    /// the rotation centre at the epoch), in `O(1)`.
+    ///
+    /// EVQ of a ball of centre `s` and radius `rho` is the EVQ term of its
+    /// centre plus `|c| rho` (`proofs/08-ball-bound.md`); NEVQ is
+    /// `|c| (|s| + rho)`. Both are rounded up, and EVQ is never above NEVQ.
+    ///
+    /// ```
+    /// use motion_bound::{BoundKind, BoundingBall, Direction, PreparedMotion, RigidMotion};
+    /// // A ball of radius 0.1 centred 1 from the axis, turning slowly about z.
+    /// let ball = BoundingBall::try_new([1.0, 0.0, 0.0], 0.1).unwrap();
+    /// let m = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0, 0.0, 0.1]).unwrap();
+    /// let probe = PreparedMotion::new(&m).probe(Direction::X);
+    /// let evq = probe.ball_speed(&ball, BoundKind::Evq);
+    /// let nevq = probe.ball_speed(&ball, BoundKind::Nevq);
+    /// // Along x the centre moves at 0.1 sin(theta) <= 0.1 sin(0.1); the rim adds 0.1 * 0.1.
+    /// assert!(evq >= 0.1 * 0.1f64.sin() + 0.01 && evq < 0.0201);
+    /// assert!(nevq >= 0.11 && evq <= nevq);
+    /// ```
+    #[must_use]
+    pub fn ball_speed(&self, ball: &BoundingBall<T>, kind: BoundKind) -> T {
+        let linear = self.p.linear_up();
+        let nevq = assemble(
+            linear,
+            nevq_rotational_up(self.p.c_norm, self.p.w_l1, ball.outer_radius_up()),
+        );
+        if kind == BoundKind::Nevq {
+            return nevq;
+        }
+        let Some(e_sq) = self.extremal_sq(core::slice::from_ref(ball.centre()), T::INFINITY) else {
+            return nevq;
+        };
+        let centre = evq_rotational_up(
+            self.p.c_norm,
+            e_sq.sqrt(),
+            self.arc.theta_m,
+            self.p.w_l1,
+            ball.centre_norm_up(),
+        );
+        let rim = nevq_rotational_up(self.p.c_norm, self.p.w_l1, ball.radius());
+        // One more addition and one more product than "Assembly" budgets:
+        // `proofs/floating-point.md`, section "Ball".
+        let rot = (centre + rim) * (T::ONE + gamma::<T>(2));
+        assemble(linear, rot).min_nan(nevq)
+    }
+
+    /// `E^2 = max_i max_arc (u . q_i)^2` over `points`, or `None` when the EVQ
+    /// term is not used (no trusted rotation) or a point reaches `stop_sq`.
+    #[inline]
+    pub(crate) fn extremal_sq(&self, points: &[[T; 3]], stop_sq: T) -> Option<T> {
+        if !self.usable {
+            return None;
+        }
+        if self.arc.full_turn {
+            full_turn_scan(points, self.arc.axis, stop_sq)
+        } else {
+            arc_scan(points, self.e1, self.e2, self.arc.ua, self.arc.ub, stop_sq)
+        }
+    }
+
+    /// `fl(|c|)`.
+    #[cfg(feature = "testkit")]
+    #[inline]
+    pub(crate) fn c_norm(&self) -> T {
+        self.p.c_norm
+    }
+
+    /// `fl(|v.n|)`, without margin.
+    #[cfg(feature = "testkit")]
+    #[inline]
+    pub(crate) fn linear_raw(&self) -> T {
+        self.p.a.abs()
+    }
+}

@@ -1,0 +1,187 @@
+//! Convex solids: boxes, thin boards and icospheres.
+
+use alloc::collections::BTreeMap;
+use alloc::vec::Vec;
+
+use crate::scenes::{positive, to_t, SceneError};
+use crate::{Float, TriMesh, Vec3};
+
+/// The box `[-x/2, x/2] x [-y/2, y/2] x [-z/2, z/2]` for `size = [x, y, z]`:
+/// 8 vertices, 12 triangles.
+///
+/// # Errors
+/// [`SceneError::Length`] for a size that is not positive and finite;
+/// [`SceneError::Mesh`] if it is too large for `T`.
+///
+/// ```
+/// use motion_bound::scenes::cuboid;
+/// let b = cuboid::<f64>([1.0, 2.0, 3.0])?;
+/// assert!((b.signed_volume() - 6.0).abs() < 1e-12);
+/// # Ok::<(), motion_bound::scenes::SceneError>(())
+/// ```
+pub fn cuboid<T: Float>(size: [f64; 3]) -> Result<TriMesh<T>, SceneError> {
+    let h = [
+        positive(size[0], "size x")? / 2.0,
+        positive(size[1], "size y")? / 2.0,
+        positive(size[2], "size z")? / 2.0,
+    ];
+    // Corner i has coordinate k at +h[k] when bit k of i is set.
+    let vertices = (0..8u32)
+        .map(|i| {
+            let s = |k: u32| if i >> k & 1 == 1 { 1.0 } else { -1.0 };
+            to_t(Vec3::new(s(0) * h[0], s(1) * h[1], s(2) * h[2]))
+        })
+        .collect();
+    // Two triangles per face, counter-clockwise seen from outside.
+    let triangles = alloc::vec![
+        [0, 2, 3],
+        [0, 3, 1], // -z
+        [4, 5, 7],
+        [4, 7, 6], // +z
+        [0, 1, 5],
+        [0, 5, 4], // -y
+        [2, 6, 7],
+        [2, 7, 3], // +y
+        [0, 4, 6],
+        [0, 6, 2], // -x
+        [1, 3, 7],
+        [1, 7, 5], // +x
+    ];
+    Ok(TriMesh::try_new(vertices, triangles)?)
+}
+
+/// A thin board: [`cuboid`] `[width, height, thickness]`, lying in the `xy`
+/// plane with its thickness along `z`; 12 triangles. The seed's scenes drop
+/// bodies onto such boards.
+///
+/// # Errors
+/// As [`cuboid`].
+pub fn board<T: Float>(width: f64, height: f64, thickness: f64) -> Result<TriMesh<T>, SceneError> {
+    cuboid([width, height, thickness])
+}
+
+/// The geodesic sphere of `radius` about the origin: an icosahedron whose
+/// triangles are split in four `subdivisions` times, new vertices pushed out
+/// to the sphere; `20 x 4^s` triangles, `10 x 4^s + 2` vertices.
+///
+/// # Errors
+/// [`SceneError::Count`] for more than 7 subdivisions (327,680 triangles);
+/// [`SceneError::Length`] for a radius that is not positive and finite;
+/// [`SceneError::Mesh`] if it is too large for `T`.
+///
+/// ```
+/// use motion_bound::scenes::icosphere;
+/// let s = icosphere::<f32>(2.0, 3)?;
+/// assert_eq!((s.vertex_count(), s.triangle_count()), (642, 1280));
+/// # Ok::<(), motion_bound::scenes::SceneError>(())
+/// ```
+pub fn icosphere<T: Float>(radius: f64, subdivisions: u32) -> Result<TriMesh<T>, SceneError> {
+    let radius = positive(radius, "radius")?;
+    if subdivisions > 7 {
+        return Err(SceneError::Count {
+            name: "subdivisions",
+            value: subdivisions,
+        });
+    }
+    let g = (1.0 + <f64 as Float>::sqrt(5.0)) / 2.0;
+    let mut points: Vec<Vec3<f64>> = [
+        [-1.0, g, 0.0],
+        [1.0, g, 0.0],
+        [-1.0, -g, 0.0],
+        [1.0, -g, 0.0],
+        [0.0, -1.0, g],
+        [0.0, 1.0, g],
+        [0.0, -1.0, -g],
+        [0.0, 1.0, -g],
+        [g, 0.0, -1.0],
+        [g, 0.0, 1.0],
+        [-g, 0.0, -1.0],
+        [-g, 0.0, 1.0],
+    ]
+    .iter()
+    .map(|&p| unit(Vec3::from_array(p)))
+    .collect();
+    let mut faces: Vec<[u32; 3]> = alloc::vec![
+        [0, 11, 5],
+        [0, 5, 1],
+        [0, 1, 7],
+        [0, 7, 10],
+        [0, 10, 11],
+        [1, 5, 9],
+        [5, 11, 4],
+        [11, 10, 2],
+        [10, 7, 6],
+        [7, 1, 8],
+        [3, 9, 4],
+        [3, 4, 2],
+        [3, 2, 6],
+        [3, 6, 8],
+        [3, 8, 9],
+        [4, 9, 5],
+        [2, 4, 11],
+        [6, 2, 10],
+        [8, 6, 7],
+        [9, 8, 1],
+    ];
+    for _ in 0..subdivisions {
+        let mut midpoints: BTreeMap<(u32, u32), u32> = BTreeMap::new();
+        let mut mid = |a: u32, b: u32, points: &mut Vec<Vec3<f64>>| -> u32 {
+            *midpoints.entry((a.min(b), a.max(b))).or_insert_with(|| {
+                let m = unit(points[a as usize] + points[b as usize]);
+                points.push(m);
+                // At most 10 x 4^7 + 2 points: fits in u32.
+                (points.len() - 1) as u32
+            })
+        };
+        let mut next = Vec::with_capacity(4 * faces.len());
+        for &[a, b, c] in &faces {
+            let ab = mid(a, b, &mut points);
+            let bc = mid(b, c, &mut points);
+            let ca = mid(c, a, &mut points);
+            next.extend_from_slice(&[[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
+        }
+        faces = next;
+    }
+    let vertices = points.iter().map(|&p| to_t(p * radius)).collect();
+    Ok(TriMesh::try_new(vertices, faces)?)
+}
+
+fn unit(p: Vec3<f64>) -> Vec3<f64> {
+    p.normalize_or(Vec3::new(0.0, 0.0, 1.0))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{board, cuboid, icosphere};
+    use crate::scenes::checks::{assert_solid, euler};
+    use crate::scenes::SceneError;
+
+    #[test]
+    fn convex_solids_are_closed_outward_spheres() {
+        let b = board::<f32>(2.0, 1.0, 0.02).unwrap();
+        assert_solid(&b, 12, "board");
+        assert_eq!(euler(&b), 2, "genus 0");
+        assert!((b.signed_volume() - 0.04).abs() < 1e-7, "board volume");
+        for s in 0..=4 {
+            let ico = icosphere::<f64>(1.5, s).unwrap();
+            assert_solid(&ico, 20 * 4usize.pow(s), "icosphere");
+            assert_eq!(euler(&ico), 2, "genus 0");
+            assert_eq!(ico.vertex_count(), 10 * 4usize.pow(s) + 2, "vertices");
+            for v in ico.vertices() {
+                let r = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+                assert!((r - 1.5).abs() < 1e-14, "on the sphere");
+            }
+        }
+        assert!(
+            matches!(icosphere::<f64>(1.0, 8), Err(SceneError::Count { .. })),
+            "too fine"
+        );
+        assert!(
+            matches!(
+                cuboid::<f64>([1.0, 0.0, 1.0]),
+                Err(SceneError::Length { .. })
+            ),
+            "flat box"
+        );
+    }
+}

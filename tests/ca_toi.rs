@@ -1,0 +1,330 @@
+//! Conservative advancement never reports a contact late and never misses one
+//! (`proofs/09-ca-toi.md`), against an independent ground truth: the first
+//! of densely sampled times at which the meshes intersect, decided by exact
+//! orientation predicates (`testkit::ground_truth`), with bodies placed by
+//! its own quaternion code.
+//!
+//! The scenes rotate: interlocking-prone torus knots and rings, a thin board
+//! spinning fast, and convex solids through the GJK stepper. Set
+//! `CA_TOI_QUERIES` to run more queries per scene.
+
+use motion_bound::ca::{
+    time_of_impact, BallPair, BoundChoice, CaOutcome, CaParams, CaReport, ConvexPair, MeshPair,
+};
+use motion_bound::scenes::{board, icosphere, torus, TorusKnot};
+use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
+use motion_bound::testkit::toi::{fly_by, random_rotation, reach, rotate_mesh, FlyBy, Rng};
+use motion_bound::{BallTree, BoundingBall, RigidMotion, TriMesh, VertexSet};
+
+/// Ground-truth samples per query over `[0, 1]`.
+const SAMPLES: usize = 256;
+
+fn queries_per_scene(default: usize) -> usize {
+    std::env::var("CA_TOI_QUERIES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(default)
+}
+
+#[derive(Default, Debug)]
+struct Tally {
+    queries: usize,
+    sampled_contacts: usize,
+    ca_contacts: usize,
+    iterations: u64,
+    violations: Vec<String>,
+}
+
+impl Tally {
+    /// Records one query: `report` from CA, `truth` the first sampled
+    /// intersection over `[0, 1]`.
+    fn record<T: motion_bound::Float>(
+        &mut self,
+        what: &str,
+        report: &CaReport<T>,
+        truth: Option<f64>,
+    ) {
+        self.queries += 1;
+        self.iterations += u64::from(report.iterations);
+        self.sampled_contacts += usize::from(truth.is_some());
+        let reported = report.outcome.earliest_possible_contact().map(T::to_f64);
+        self.ca_contacts += usize::from(report.outcome.contact().is_some());
+        match (reported, truth) {
+            (None, Some(g)) => self
+                .violations
+                .push(format!("{what}: MISSED a contact sampled at t = {g}")),
+            (Some(t), Some(g)) if g < t => self.violations.push(format!(
+                "{what}: LATE: reported {t} after a sampled intersection at {g}"
+            )),
+            _ => {}
+        }
+    }
+
+    fn assert_clean(&self, scene: &str) {
+        println!(
+            "{scene}: {} queries, {} sampled contacts, {} CA contacts, {} near misses, {:.2} iterations per query, {} violations",
+            self.queries,
+            self.sampled_contacts,
+            self.ca_contacts,
+            self.queries - self.sampled_contacts,
+            self.iterations as f64 / self.queries.max(1) as f64,
+            self.violations.len()
+        );
+        assert!(
+            self.violations.is_empty(),
+            "{scene}: {} violations, first: {}",
+            self.violations.len(),
+            self.violations[0]
+        );
+        assert!(
+            self.sampled_contacts * 4 >= self.queries,
+            "{scene}: too few real contacts ({} of {}) for the test to have power",
+            self.sampled_contacts,
+            self.queries
+        );
+    }
+}
+
+/// `orientations` randomly rotated copies of `mesh` with their trees.
+fn oriented(
+    mesh: &TriMesh<f64>,
+    orientations: usize,
+    rng: &mut Rng,
+) -> Vec<(TriMesh<f64>, BallTree<f64>)> {
+    (0..orientations)
+        .map(|_| {
+            let m = rotate_mesh(mesh, &random_rotation(rng));
+            let t = BallTree::try_from_mesh(&m).expect("valid mesh");
+            (m, t)
+        })
+        .collect()
+}
+
+/// Runs `n` random fly-by queries of A against B, alternating the bounds.
+fn run_meshes(scene: &str, a: &TriMesh<f64>, b: &TriMesh<f64>, spin: f64, n: usize, seed: u64) {
+    let mut rng = Rng::new(seed);
+    let (oa, ob) = (oriented(a, 4, &mut rng), oriented(b, 4, &mut rng));
+    let (ra, rb) = (reach(a), reach(b));
+    let eps = 1e-3 * (ra + rb);
+    let mut tally = Tally::default();
+    for k in 0..n {
+        let (ma, ta) = &oa[k % 4];
+        let (mb, tb) = &ob[(k / 4) % 4];
+        let q = fly_by(&mut rng, ra, rb, spin);
+        let bound = [BoundChoice::Evq, BoundChoice::Nevq, BoundChoice::Auto][k % 3];
+        let params = CaParams::default()
+            .with_contact_distance(eps)
+            .with_bound(bound);
+        let report =
+            time_of_impact(&mut MeshPair::new(ta, tb), &q.a, &q.b, &params).expect("valid query");
+        let truth = first_sampled_contact(
+            MeshRef::from(ma),
+            &q.a,
+            MeshRef::from(mb),
+            &q.b,
+            (0.0, 1.0),
+            SAMPLES,
+        );
+        tally.record(&format!("{scene} query {k} ({bound:?})"), &report, truth);
+    }
+    tally.assert_clean(scene);
+}
+
+#[test]
+fn torus_knots_with_rotation_are_never_late_and_never_missed() {
+    let knot = TorusKnot::TREFOIL.mesh::<f64>(60, 8).expect("knot");
+    run_meshes("knot vs knot", &knot, &knot, 6.0, queries_per_scene(300), 1);
+}
+
+#[test]
+fn rings_with_rotation_are_never_late_and_never_missed() {
+    let ring = torus::<f64>(0.5, 0.08, 32, 8).expect("ring");
+    run_meshes("ring vs ring", &ring, &ring, 6.0, queries_per_scene(300), 2);
+}
+
+#[test]
+fn thin_fast_spinning_board_is_never_late_and_never_missed() {
+    let plank = board::<f64>(1.0, 0.4, 0.005).expect("board");
+    let knot = TorusKnot::TREFOIL.mesh::<f64>(60, 8).expect("knot");
+    run_meshes(
+        "spinning board vs knot",
+        &plank,
+        &knot,
+        40.0,
+        queries_per_scene(300),
+        3,
+    );
+}
+
+#[test]
+fn convex_solids_through_gjk_are_never_late_and_never_missed() {
+    let ball = icosphere::<f64>(0.3, 1).expect("icosphere");
+    let slab = board::<f64>(0.8, 0.5, 0.02).expect("board");
+    let mut rng = Rng::new(4);
+    let (ra, rb) = (reach(&ball), reach(&slab));
+    let mut tally = Tally::default();
+    for k in 0..queries_per_scene(200) {
+        let rot = random_rotation(&mut rng);
+        let (a, b) = (
+            rotate_mesh(&ball, &rot),
+            rotate_mesh(&slab, &random_rotation(&mut rng)),
+        );
+        let q = fly_by(&mut rng, ra, rb, 20.0);
+        let (va, vb) = (
+            VertexSet::try_new(a.vertices()).expect("valid"),
+            VertexSet::try_new(b.vertices()).expect("valid"),
+        );
+        let bound = [BoundChoice::Evq, BoundChoice::Nevq, BoundChoice::Auto][k % 3];
+        let params = CaParams::default()
+            .with_contact_distance(1e-4)
+            .with_bound(bound);
+        let report = time_of_impact(&mut ConvexPair::with_gjk(va, vb), &q.a, &q.b, &params)
+            .expect("valid query");
+        let truth = first_sampled_contact(
+            MeshRef::from(&a),
+            &q.a,
+            MeshRef::from(&b),
+            &q.b,
+            (0.0, 1.0),
+            SAMPLES,
+        );
+        tally.record(&format!("convex query {k} ({bound:?})"), &report, truth);
+    }
+    tally.assert_clean("convex (GJK)");
+}
+
+/// The same knot scene in `f32`: meshes and motions rounded to `f32`, the
+/// ground truth computed in `f64` from exactly those rounded inputs.
+#[test]
+fn f32_meshes_are_never_late_and_never_missed() {
+    let knot64 = TorusKnot::TREFOIL.mesh::<f64>(60, 8).expect("knot");
+    let mut rng = Rng::new(5);
+    let shapes: Vec<(TriMesh<f64>, BallTree<f32>)> = (0..4)
+        .map(|_| {
+            let m32: TriMesh<f32> = rotate_mesh(&knot64, &random_rotation(&mut rng))
+                .try_convert()
+                .expect("fits f32");
+            let tree = BallTree::try_from_mesh(&m32).expect("valid");
+            (m32.try_convert().expect("exact"), tree)
+        })
+        .collect();
+    let r = reach(&knot64);
+    let to32 = |m: &RigidMotion<f64>| {
+        let f = |v: [f64; 3]| v.map(|x| x as f32);
+        RigidMotion::<f32>::try_from_arrays(
+            f(m.centre().to_array()),
+            f(m.linear().to_array()),
+            f(m.angular().to_array()),
+        )
+        .expect("finite")
+    };
+    let to64 = |m: &RigidMotion<f32>| {
+        let f = |v: [f32; 3]| v.map(f64::from);
+        RigidMotion::<f64>::try_from_arrays(
+            f(m.centre().to_array()),
+            f(m.linear().to_array()),
+            f(m.angular().to_array()),
+        )
+        .expect("finite")
+    };
+    let mut tally = Tally::default();
+    for k in 0..queries_per_scene(200) {
+        let (ma, ta) = &shapes[k % 4];
+        let (mb, tb) = &shapes[(k + 1) % 4];
+        let FlyBy { a, b } = fly_by(&mut rng, r, r, 6.0);
+        let (a32, b32) = (to32(&a), to32(&b));
+        let bound = [BoundChoice::Evq, BoundChoice::Nevq][k % 2];
+        let params = CaParams::<f32>::default()
+            .with_contact_distance(2e-3)
+            .with_bound(bound);
+        let report =
+            time_of_impact(&mut MeshPair::new(ta, tb), &a32, &b32, &params).expect("valid");
+        let truth = first_sampled_contact(
+            MeshRef::from(ma),
+            &to64(&a32),
+            MeshRef::from(mb),
+            &to64(&b32),
+            (0.0, 1.0),
+            SAMPLES,
+        );
+        tally.record(&format!("f32 query {k} ({bound:?})"), &report, truth);
+    }
+    tally.assert_clean("knot vs knot, f32");
+}
+
+#[test]
+fn ball_pair_matches_the_closed_form() {
+    // Two balls approaching head-on with spin about their centres: the
+    // spin moves no point of a ball centred on its rotation centre off the
+    // ball, so contact is at the closed-form time (d - ra - rb) / |v|.
+    let mut rng = Rng::new(6);
+    for _ in 0..500 {
+        let (ra, rb) = (rng.range(0.1, 1.0), rng.range(0.1, 1.0));
+        let dir = rng.direction();
+        let dist = ra + rb + rng.range(0.01, 3.0);
+        let speed = rng.range(0.5, 8.0);
+        let a = RigidMotion::try_from_arrays([0.0; 3], dir.map(|x| x * speed), rng.direction())
+            .expect("finite");
+        let b = RigidMotion::try_from_arrays(
+            dir.map(|x| x * dist),
+            [0.0; 3],
+            rng.direction().map(|x| x * 5.0),
+        )
+        .expect("finite");
+        let pair = &mut BallPair::new(
+            BoundingBall::try_new([0.0; 3], ra).expect("ball"),
+            BoundingBall::try_new([0.0; 3], rb).expect("ball"),
+        );
+        let eps = 1e-6;
+        let report = time_of_impact(
+            pair,
+            &a,
+            &b,
+            &CaParams::default().with_contact_distance(eps),
+        )
+        .expect("valid");
+        let exact = (dist - ra - rb) / speed;
+        match report.outcome.contact() {
+            Some(c) => {
+                assert!(c.time <= exact, "late: {} > {exact}", c.time);
+                assert!(
+                    c.time >= exact - 2.0 * eps / speed,
+                    "too early: {} vs {exact}",
+                    c.time
+                );
+            }
+            None => assert!(
+                exact > 1.0,
+                "missed a contact at {exact}: {:?}",
+                report.outcome
+            ),
+        }
+    }
+}
+
+#[test]
+fn parameters_and_intervals_are_validated() {
+    let ball = BoundingBall::try_new([0.0; 3], 1.0).expect("ball");
+    let m = RigidMotion::try_from_arrays([0.0; 3], [1.0, 0.0, 0.0], [0.0; 3]).expect("motion");
+    let pair = &mut BallPair::new(ball, ball);
+    let bad = CaParams::default().with_contact_distance(f64::NAN);
+    assert!(time_of_impact(pair, &m, &m, &bad).is_err(), "NaN tolerance");
+    let bad = CaParams::default().with_max_iterations(0);
+    assert!(
+        time_of_impact(pair, &m, &m, &bad).is_err(),
+        "zero iterations"
+    );
+    let other = m.restrict(0.0, 0.5).expect("sub-interval");
+    assert!(
+        time_of_impact(pair, &m, &other, &CaParams::default()).is_err(),
+        "interval mismatch"
+    );
+    // Overlapping from the start: an initial contact, in one iteration.
+    let r = time_of_impact(pair, &m, &m, &CaParams::default()).expect("valid");
+    assert!(
+        matches!(r.outcome, CaOutcome::InitialContact(_)),
+        "{:?}",
+        r.outcome
+    );
+    assert_eq!(r.iterations, 1, "one iteration");
+}
