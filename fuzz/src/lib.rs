@@ -51,8 +51,6 @@ pub trait Precision: Float + for<'a> Arbitrary<'a> {
     const R_EPS: f64;
     /// The next representable value towards `+inf`.
     fn next_up(self) -> Self;
-    /// The next representable value towards `-inf`.
-    fn next_down(self) -> Self;
 }
 
 impl Precision for f32 {
@@ -65,9 +63,6 @@ impl Precision for f32 {
     fn next_up(self) -> Self {
         f32::next_up(self)
     }
-    fn next_down(self) -> Self {
-        f32::next_down(self)
-    }
 }
 
 impl Precision for f64 {
@@ -79,9 +74,6 @@ impl Precision for f64 {
     const R_EPS: f64 = 1.0 / (1u128 << 100) as f64;
     fn next_up(self) -> Self {
         f64::next_up(self)
-    }
-    fn next_down(self) -> Self {
-        f64::next_down(self)
     }
 }
 
