@@ -377,7 +377,12 @@ fn run_size(args: &Args, size: TorusKnotSize, parry_per_triangle: &mut Option<f6
     );
 
     // Parry on the first M queries.
-    let m = args.parry_queries;
+    // `--parry-budget 0` (or `--parry-queries 0`) skips parry altogether.
+    let m = if args.parry_budget > 0.0 {
+        args.parry_queries
+    } else {
+        0
+    };
     let mut parry: Vec<Option<ParryAnswer>> = vec![None; m];
     let mut parry_ms = Vec::new();
     let mut summary_parry = None;
