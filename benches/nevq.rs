@@ -18,44 +18,27 @@ use motion_bound::{nevq, BodySummary, Direction, Float, RigidMotion, Vec3, Verte
 /// How many precomputed queries one iteration evaluates.
 const QUERIES: usize = 1024;
 
-/// A uniform random number in `[lo, hi)`.
-fn uniform(rng: &mut SplitMix64, lo: f64, hi: f64) -> f64 {
-    lo + (hi - lo) * 0.5 * (rng.signed_unit() + 1.0)
-}
-
-/// A random unit vector (rejection sampling in the unit ball).
-fn unit(rng: &mut SplitMix64) -> [f64; 3] {
-    loop {
-        let p = rng.vec3();
-        let l2 = p[0] * p[0] + p[1] * p[1] + p[2] * p[2];
-        if l2 > 1e-4 && l2 <= 1.0 {
-            let l = l2.sqrt();
-            return p.map(|x| x / l);
-        }
-    }
-}
-
 /// [`QUERIES`] random motions and directions, in the precision `T`.
 fn queries<T: Float>(seed: u64) -> Vec<(RigidMotion<T>, Direction<T>)> {
     let mut rng = SplitMix64(seed);
     (0..QUERIES)
         .map(|i| {
             let v = rng.vec3().map(T::from_f64);
-            let omega = 10f64.powf(uniform(&mut rng, -1.0, 1.0));
-            let w = unit(&mut rng).map(|x| T::from_f64(x * omega));
+            let omega = 10f64.powf(rng.range(-1.0, 1.0));
+            let w = rng.direction().map(|x| T::from_f64(x * omega));
             let motion = RigidMotion::try_from_arrays([T::ZERO; 3], v, w)
                 .expect("random motion is finite and small");
             let motion = if i % 2 == 0 {
                 motion
             } else {
-                let a = uniform(&mut rng, 0.0, 1.0);
-                let b = uniform(&mut rng, 0.0, 1.0);
+                let a = rng.range(0.0, 1.0);
+                let b = rng.range(0.0, 1.0);
                 let (a, b) = if a <= b { (a, b) } else { (b, a) };
                 motion
                     .restrict(T::from_f64(a), T::from_f64(b))
                     .expect("sub-interval of [0, 1]")
             };
-            let n = Direction::try_new(Vec3::from_array(unit(&mut rng).map(T::from_f64)))
+            let n = Direction::try_new(Vec3::from_array(rng.direction().map(T::from_f64)))
                 .expect("unit direction");
             (motion, n)
         })
