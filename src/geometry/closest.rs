@@ -176,7 +176,14 @@ pub fn point_triangle<T: Float>(p: Vec3<T>, [a, b, c]: [Vec3<T>; 3]) -> ClosestP
 /// small-integer coordinates and for shared vertices). In configurations
 /// within rounding of a degenerate one the result may be a rounding-level
 /// positive distance for touching triangles, or 0 for triangles a
-/// rounding-level distance apart.
+/// rounding-level distance apart. "Rounding-level" scales with the
+/// conditioning of the planes: about `u s / sin(worst angle)` of the
+/// thinner triangle, since a point's distance to a sliver's plane goes
+/// through a normal computed from nearly parallel edges (a touching pair
+/// with a 0.5-degree sliver gave `1850 u s`; `tests/geometry.rs` checks
+/// `2^10 u s / sin`). Conservative advancement does not rely on this
+/// distance for its step (it takes the slab gap of the corners along the
+/// pair's direction, `proofs/09-ca-toi.md`), only to declare contact.
 ///
 /// Degenerate (zero-area) triangles are segments or points and give their
 /// correct distance. Non-finite input gives a NaN distance.
