@@ -170,6 +170,8 @@ impl Run {
         self.stats.pruned += s.pruned;
         self.stats.triangle_pairs += s.triangle_pairs;
         self.stats.bounds += s.bounds;
+        self.stats.overlapping += s.overlapping;
+        self.stats.settled += s.settled;
     }
 }
 
@@ -328,7 +330,7 @@ fn run_size(args: &Args, size: TorusKnotSize, parry_per_triangle: &mut Option<f6
     }
     let (seed_evq_ms, seed_nevq_ms, seed_evq_it, seed_nevq_it) = seed_numbers(size);
     println!(
-        "   {:<5} {:>8} {:>9} {:>6} {:>8} {:>11} {:>10} {:>9} {:>8} | {:>8} {:>9}",
+        "   {:<5} {:>8} {:>9} {:>6} {:>8} {:>11} {:>10} {:>9} {:>8} {:>8} {:>8} | {:>8} {:>9}",
         "bound",
         "mean ms",
         "median ms",
@@ -338,6 +340,8 @@ fn run_size(args: &Args, size: TorusKnotSize, parry_per_triangle: &mut Option<f6
         "tri pairs",
         "bounds",
         "pruned",
+        "overlap",
+        "settled",
         "seed ms",
         "seed iters"
     );
@@ -345,13 +349,15 @@ fn run_size(args: &Args, size: TorusKnotSize, parry_per_triangle: &mut Option<f6
     let row = |name: &str, r: &Run, seed_ms: f64, seed_it: f64| {
         let (mean, median) = mean_median(&r.times_ms);
         println!(
-            "   {name:<5} {mean:>8.3} {median:>9.3} {:>6.2} {:>7.1}% {:>11.0} {:>10.1} {:>9.0} {:>8.0} | {seed_ms:>8.3} {seed_it:>9.2}",
+            "   {name:<5} {mean:>8.3} {median:>9.3} {:>6.2} {:>7.1}% {:>11.0} {:>10.1} {:>9.0} {:>8.0} {:>8.0} {:>8.0} | {seed_ms:>8.3} {seed_it:>9.2}",
             r.iterations as f64 / nf,
             100.0 * r.contacts as f64 / nf,
             r.stats.node_pairs as f64 / nf,
             r.stats.triangle_pairs as f64 / nf,
             r.stats.bounds as f64 / nf,
             r.stats.pruned as f64 / nf,
+            r.stats.overlapping as f64 / nf,
+            r.stats.settled as f64 / nf,
         );
         (mean, median, r.iterations as f64 / nf)
     };

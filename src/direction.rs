@@ -52,6 +52,21 @@ impl<T: Float> Direction<T> {
         Ok(Self(Vec3::new(s.x / len, s.y / len, s.z / len)))
     }
 
+    /// As [`try_new`](Self::try_new), faster where `|v|^2` is a normal,
+    /// finite number: one square root, one division and three products
+    /// (`proofs/floating-point.md`, "Direction": same `gamma_5` guarantee).
+    #[cfg(feature = "alloc")]
+    #[inline]
+    pub(crate) fn try_new_fast(v: Vec3<T>) -> Result<Self, InputError> {
+        let q = v.length_squared();
+        if q.is_finite() && q >= T::TINY_LENGTH * T::TINY_LENGTH {
+            let r = T::ONE / q.sqrt();
+            Ok(Self(Vec3::new(v.x * r, v.y * r, v.z * r)))
+        } else {
+            Self::try_new(v)
+        }
+    }
+
     /// The direction of `v`, or `fallback` when `v` is zero or not finite.
     #[must_use]
     pub fn new_or(v: Vec3<T>, fallback: Self) -> Self {

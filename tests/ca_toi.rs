@@ -100,8 +100,22 @@ fn oriented(
         .collect()
 }
 
-/// Runs `n` random fly-by queries of A against B, alternating the bounds.
+/// Runs `n` random fly-by queries of A against B, alternating the bounds,
+/// with the default horizon factor and far ratio.
 fn run_meshes(scene: &str, a: &TriMesh<f64>, b: &TriMesh<f64>, spin: f64, n: usize, seed: u64) {
+    run_meshes_with(scene, (a, b), spin, n, seed, |_| None);
+}
+
+/// As [`run_meshes`], with query `k` using `(horizon factor, far ratio)`
+/// from `settings(k)` when it gives one.
+fn run_meshes_with(
+    scene: &str,
+    (a, b): (&TriMesh<f64>, &TriMesh<f64>),
+    spin: f64,
+    n: usize,
+    seed: u64,
+    settings: impl Fn(usize) -> Option<(f64, f64)>,
+) {
     let mut rng = Rng::new(seed);
     let (oa, ob) = (oriented(a, 4, &mut rng), oriented(b, 4, &mut rng));
     let (ra, rb) = (reach(a), reach(b));
@@ -112,11 +126,15 @@ fn run_meshes(scene: &str, a: &TriMesh<f64>, b: &TriMesh<f64>, spin: f64, n: usi
         let (mb, tb) = &ob[(k / 4) % 4];
         let q = fly_by(&mut rng, ra, rb, spin);
         let bound = [BoundChoice::Evq, BoundChoice::Nevq, BoundChoice::Auto][k % 3];
-        let params = CaParams::default()
+        let mut params = CaParams::default()
             .with_contact_distance(eps)
             .with_bound(bound);
-        let report =
-            time_of_impact(&mut MeshPair::new(ta, tb), &q.a, &q.b, &params).expect("valid query");
+        let mut pair = MeshPair::new(ta, tb);
+        if let Some((horizon, far)) = settings(k) {
+            params = params.with_horizon_factor(horizon);
+            pair = pair.with_far_ratio(far);
+        }
+        let report = time_of_impact(&mut pair, &q.a, &q.b, &params).expect("valid query");
         let truth = first_sampled_contact(
             MeshRef::from(ma),
             &q.a,
@@ -134,6 +152,23 @@ fn run_meshes(scene: &str, a: &TriMesh<f64>, b: &TriMesh<f64>, spin: f64, n: usi
 fn torus_knots_with_rotation_are_never_late_and_never_missed() {
     let knot = TorusKnot::TREFOIL.mesh::<f64>(60, 8).expect("knot");
     run_meshes("knot vs knot", &knot, &knot, 6.0, queries_per_scene(300), 1);
+}
+
+#[test]
+fn horizon_and_far_ratio_stay_sound() {
+    // The time-resolved step off, short and long horizons; never settling a
+    // pair, settling eagerly and rarely (`proofs/09-ca-toi.md`, Lemma 9.3).
+    let knot = TorusKnot::TREFOIL.mesh::<f64>(60, 8).expect("knot");
+    let horizons = [0.0, 1.5, 8.0];
+    let far = [f64::INFINITY, 0.5, 16.0];
+    run_meshes_with(
+        "knot vs knot, other horizons and far ratios",
+        (&knot, &knot),
+        6.0,
+        queries_per_scene(90),
+        11,
+        |k| Some((horizons[k % 3], far[(k / 3) % 3])),
+    );
 }
 
 #[test]
@@ -314,6 +349,16 @@ fn parameters_and_intervals_are_validated() {
         time_of_impact(pair, &m, &m, &bad).is_err(),
         "zero iterations"
     );
+    for f in [0.5, 1.0, -1.0, f64::NAN] {
+        let bad = CaParams::default().with_horizon_factor(f);
+        assert_eq!(
+            time_of_impact(pair, &m, &m, &bad).err(),
+            Some(motion_bound::ca::CaError::InvalidParameter(
+                "horizon_factor"
+            )),
+            "horizon factor {f}"
+        );
+    }
     let other = m.restrict(0.0, 0.5).expect("sub-interval");
     assert!(
         time_of_impact(pair, &m, &other, &CaParams::default()).is_err(),

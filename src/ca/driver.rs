@@ -82,6 +82,7 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
     let end = motion_a.interval().end();
     let mut t = motion_a.interval().start();
     let mut iterations = 0;
+    let mut last_step: Option<T> = None;
     let report = |outcome, iterations| {
         Ok(CaReport {
             outcome,
@@ -93,8 +94,20 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
             return report(CaOutcome::IterationLimit { time: t }, iterations);
         }
         iterations += 1;
-        let pa = PreparedMotion::new(&motion_a.restrict(t, end)?);
-        let pb = PreparedMotion::new(&motion_b.restrict(t, end)?);
+        // The time-resolved step: bounds over [t, horizon] only.
+        let horizon = match last_step {
+            Some(s) if params.horizon_factor > T::ZERO => {
+                let h = t + s * params.horizon_factor;
+                if h > t && h < end {
+                    h
+                } else {
+                    end
+                }
+            }
+            _ => end,
+        };
+        let pa = PreparedMotion::new(&motion_a.restrict(t, horizon)?);
+        let pb = PreparedMotion::new(&motion_b.restrict(t, horizon)?);
         match stepper.step(t, &pa, &pb, params) {
             StepResult::Touching { witness, normal } => {
                 let contact = Contact {
@@ -118,6 +131,16 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
                 normal,
             } => {
                 let step = if step.is_nan() { T::ZERO } else { step };
+                // The bounds hold over [t, horizon] only: `next_down` makes
+                // the rounded length at most the exact one (as `advance_down`).
+                // At the interval's end the step may reach past it: that is
+                // `Separated`.
+                let step = if horizon < end {
+                    step.min_nan((horizon - t).next_down())
+                } else {
+                    step
+                };
+                last_step = Some(step);
                 let next = advance_down(t, step);
                 if next >= end {
                     return report(CaOutcome::Separated, iterations);

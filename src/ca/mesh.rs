@@ -6,8 +6,10 @@ use crate::bvh::{BallTree, Leaf};
 use crate::ca::driver::{gap_step, placement_error};
 use crate::ca::{CaParams, CaStep, StepResult, Witness};
 use crate::geometry::closest::triangle_triangle;
-use crate::rounding::box_support_up;
 use crate::{BoundKind, Direction, Float, Pose, PreparedMotion, Vec3};
+
+/// The default of [`MeshPair::with_far_ratio`].
+const FAR_RATIO: f64 = 2.0;
 
 /// Work counters of a [`MeshPair`], summed over every step since the last
 /// [`MeshPair::reset_stats`]: what a profile of the query needs.
@@ -22,16 +24,24 @@ pub struct TraversalStats {
     pub triangle_pairs: u64,
     /// Directed bounds evaluated (two per node pair that is separated).
     pub bounds: u64,
+    /// Node pairs far apart for their size, whose own step was taken
+    /// without splitting them ([`MeshPair::with_far_ratio`]).
+    pub settled: u64,
+    /// Child node pairs whose volumes no tested direction separates (a zero
+    /// safe step): they can only be split.
+    pub overlapping: u64,
 }
 
 /// Conservative advancement of two non-convex triangle meshes (a
 /// [`CaStep`]): one step is a simultaneous descent of both ball trees.
 ///
-/// For a node pair with balls `(s_a, rho_a)`, `(s_b, rho_b)` placed at time
-/// `t`, the direction `n` joining the centres separates the balls by the gap
-/// `g = |c_b - c_a| - rho_a - rho_b`; every point below the pair moves along
-/// `n` at most at the balls' directed bounds `mu_a + mu_b` (EVQ of a ball is
-/// `O(1)`), so the pair cannot touch before `g / (mu_a + mu_b)`. A pair whose
+/// For a node pair placed at time `t`, the gap `g` between the nodes'
+/// oriented boxes (or balls) is measured along three directions, the line
+/// joining their centres and each box's thinnest axis, and the largest is
+/// kept with its direction `n`; every point below the pair moves along `n`
+/// at most at the balls' directed bounds `mu_a + mu_b` (EVQ of a ball is
+/// `O(1)`), so the pair cannot touch before `g / (mu_a + mu_b)`. A pair far
+/// apart for its size is settled with that step ([`MeshPair::with_far_ratio`]). A pair whose
 /// step is at least the best step found so far is pruned; triangle pairs get
 /// their exact distance, their own closest direction and the bounds of their
 /// three corners. The least step over the cut is safe for the whole meshes
@@ -43,6 +53,7 @@ pub struct MeshPair<'a, T> {
     heap: BinaryHeap<Pending>,
     stats: TraversalStats,
     accept: T,
+    far_ratio: T,
     closest: Option<(u32, u32)>,
 }
 
@@ -56,6 +67,7 @@ impl<'a, T: Float> MeshPair<'a, T> {
             heap: BinaryHeap::with_capacity(256),
             stats: TraversalStats::default(),
             accept: T::ONE,
+            far_ratio: T::from_f64(FAR_RATIO),
             closest: None,
         }
     }
@@ -72,6 +84,17 @@ impl<'a, T: Float> MeshPair<'a, T> {
         } else {
             T::ONE
         };
+        self
+    }
+
+    /// Takes a node pair's own step, without splitting it, when the gap
+    /// between its volumes is at least `ratio` times the sum of its balls'
+    /// radii (default 4): below such a pair the gap grows by at most
+    /// `2 / ratio` of itself, so splitting it buys little step and costs a
+    /// descent. `+inf` (or NaN, or a negative ratio) always splits.
+    #[must_use]
+    pub fn with_far_ratio(mut self, ratio: T) -> Self {
+        self.far_ratio = if ratio >= T::ZERO { ratio } else { T::INFINITY };
         self
     }
 
@@ -125,43 +148,65 @@ impl<T: Float> Placed<'_, T> {
 }
 
 impl<T: Float> MeshPair<'_, T> {
-    /// The safe step of a node pair from its balls (Lemma 9.1 with the
-    /// direction joining the centres), `0` when the balls overlap.
-    fn ball_step(
+    /// The safe step of a node pair (Lemma 9.1): the largest gap between
+    /// the placed nodes along one of three directions (the line joining the
+    /// box centres, where the balls' gap counts too, and each box's thinnest
+    /// axis), over the balls' directed bounds along it; `0` when no
+    /// direction separates them.
+    fn node_step(
         &mut self,
         pa: &Placed<'_, T>,
         pb: &Placed<'_, T>,
         i: u32,
         j: u32,
         kind: BoundKind,
-    ) -> T {
+    ) -> (T, bool) {
         let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
         let d = pb.centre(self.b, j) - pa.centre(self.a, i);
-        let Ok(n) = Direction::try_new(d) else {
-            return T::ZERO;
+        // The gap of the boxes along `n` (any sign of `n`: the slab between
+        // them is measured along whichever way separates).
+        let box_gap = |n: Vec3<T>| {
+            let along = d.dot(n).abs();
+            let sa = na
+                .obb
+                .support_up(pa.pose.inverse_transform_vector(n), pa.angle);
+            let sb = nb
+                .obb
+                .support_up(pb.pose.inverse_transform_vector(n), pb.angle);
+            along - sa - sb
         };
-        let nv = n.get();
-        let centres = d.dot(nv);
-        let ball_gap = centres - na.ball.radius() - nb.ball.radius();
-        // The boxes' slab along n: support `sum h_k |(R^T n)_k|` per body
-        // (`proofs/floating-point.md`, "Box").
-        let support = |p: &Placed<'_, T>, half: &[T; 3], half_l1: T| {
-            let m = p.pose.inverse_transform_vector(nv);
-            let s = half[0] * m.x.abs() + half[1] * m.y.abs() + half[2] * m.z.abs();
-            box_support_up(s, half_l1, p.angle)
+        let mut best: Option<(T, Direction<T>)> = None;
+        let mut consider = |n: Direction<T>, gap: T| {
+            if gap > T::ZERO && best.is_none_or(|(g, _)| gap > g) {
+                best = Some((gap, n));
+            }
         };
-        let box_gap =
-            centres - support(pa, &na.half, na.half_l1) - support(pb, &nb.half, nb.half_l1);
-        let gap = ball_gap.max_nan(box_gap);
-        if gap <= T::ZERO {
-            return T::ZERO;
+        if let Ok(n) = Direction::try_new_fast(d) {
+            let ball_gap = d.dot(n.get()) - na.ball.radius() - nb.ball.radius();
+            consider(n, ball_gap.max_nan(box_gap(n.get())));
         }
+        for (p, node) in [(pa, na), (pb, nb)] {
+            let thin = p.pose.transform_vector(Vec3::from_array(node.obb.axes[2]));
+            if let Ok(n) = Direction::try_new_fast(thin) {
+                consider(n, box_gap(n.get()));
+            }
+        }
+        let Some((gap, n)) = best else {
+            self.stats.overlapping += 1;
+            return (T::ZERO, false);
+        };
+        // Orient n from A to B: the slab gap is measured along it.
+        let n = if d.dot(n.get()) < T::ZERO { -n } else { n };
         self.stats.bounds += 2;
         let mu = (
             pa.motion.probe(n).ball_speed(&na.ball, kind),
             pb.motion.probe(n).ball_speed(&nb.ball, kind),
         );
-        gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu).0
+        let far = gap >= self.far_ratio * (na.ball.radius() + nb.ball.radius());
+        (
+            gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu).0,
+            far,
+        )
     }
 }
 
@@ -179,14 +224,17 @@ struct Pending {
     key: OrdF64,
     i: u32,
     j: u32,
+    /// The pair is far apart for its size: its step is taken as it is.
+    far: bool,
 }
 
 impl Pending {
-    fn new<T: Float>(step: T, i: u32, j: u32) -> Self {
+    fn new<T: Float>(step: T, i: u32, j: u32, far: bool) -> Self {
         Self {
             key: OrdF64(step.to_f64()),
             i,
             j,
+            far,
         }
     }
 }
@@ -218,11 +266,10 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         b: &PreparedMotion<T>,
         params: &CaParams<T>,
     ) -> StepResult<T> {
-        // Node centres and box corners lie within 4 times the root ball's
-        // outer radius of the rotation centre (a box centre is within
-        // sqrt(3) radii of the ball it was built from): cover them all.
+        // Every node centre, box point and corner lies within the tree's
+        // certified reach of the rotation centre: cover them all.
         let place = |tree: &BallTree<T>, m: &'_ PreparedMotion<T>| {
-            let r = tree.root_ball().outer_radius_up() * T::from_u32(4);
+            let r = tree.reach;
             let (err, reach) = placement_error(m.motion(), t, r);
             (m.motion().pose_at(t), err, reach)
         };
@@ -248,8 +295,8 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         let mut normal = None;
         self.heap.clear();
         self.closest = None;
-        self.heap.push(Pending::new(T::ZERO, 0, 0));
-        while let Some(Pending { key, i, j }) = self.heap.pop() {
+        self.heap.push(Pending::new(T::ZERO, 0, 0, false));
+        while let Some(Pending { key, i, j, far }) = self.heap.pop() {
             let key = T::from_f64(key.0);
             if key >= best * self.accept {
                 // Best-first: every pair left has a step at least `key`, so
@@ -259,6 +306,13 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 break;
             }
             self.stats.node_pairs += 1;
+            if far {
+                // Splitting a pair this far apart for its size would gain
+                // little: its own step is safe for everything below it.
+                self.stats.settled += 1;
+                best = best.min_nan(key);
+                continue;
+            }
             let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
             if let (Some(la), Some(lb)) = (na.leaf(), nb.leaf()) {
                 let (la, lb) = (&self.a.leaves[la], &self.b.leaves[lb]);
@@ -315,9 +369,9 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 [(i, nb.left), (i, nb.right)]
             };
             for (ci, cj) in children {
-                let step = self.ball_step(&pa, &pb, ci, cj, kind);
+                let (step, far) = self.node_step(&pa, &pb, ci, cj, kind);
                 if step < best {
-                    self.heap.push(Pending::new(step, ci, cj));
+                    self.heap.push(Pending::new(step, ci, cj, far));
                 } else {
                     self.stats.pruned += 1;
                 }

@@ -53,6 +53,16 @@ pub struct CaParams<T> {
     pub max_iterations: u32,
     /// Which bound to use. Default [`BoundChoice::Auto`].
     pub bound: BoundChoice,
+    /// The time-resolved step: each iteration takes its bounds over the
+    /// motions restricted to `[t, t + h]`, with `h` this factor times the
+    /// previous step (the rest of the interval on the first iteration, or
+    /// when `t + h` reaches past it). A step is never longer than `h`, so a
+    /// step cut by the horizon makes the next horizon `factor` times longer.
+    /// Over a shorter arc the EVQ term is tighter (the rotating direction
+    /// sweeps less), so steps near contact get longer and fewer.
+    /// Default `2`; `0` takes every bound over the rest of the interval.
+    /// Must be `0` or greater than `1` (`+inf` acts like `0`).
+    pub horizon_factor: T,
 }
 
 impl<T: Float> Default for CaParams<T> {
@@ -62,6 +72,7 @@ impl<T: Float> Default for CaParams<T> {
             time_tolerance: T::from_f64(1e-9),
             max_iterations: 100,
             bound: BoundChoice::Auto,
+            horizon_factor: T::TWO,
         }
     }
 }
@@ -95,11 +106,19 @@ impl<T: Float> CaParams<T> {
         self
     }
 
+    /// With another horizon factor (`0` turns the time-resolved step off).
+    #[must_use]
+    pub const fn with_horizon_factor(mut self, factor: T) -> Self {
+        self.horizon_factor = factor;
+        self
+    }
+
     /// Checks the parameters.
     ///
     /// # Errors
     /// [`CaError::InvalidParameter`] naming a tolerance that is negative, NaN
-    /// or infinite, or a zero iteration limit.
+    /// or infinite, a zero iteration limit, or a horizon factor that is
+    /// neither `0` nor above `1`.
     pub fn validate(&self) -> Result<(), CaError> {
         let ok = |x: T| x.is_finite() && x >= T::ZERO;
         if !ok(self.contact_distance) {
@@ -107,6 +126,10 @@ impl<T: Float> CaParams<T> {
         }
         if !ok(self.time_tolerance) {
             return Err(CaError::InvalidParameter("time_tolerance"));
+        }
+        let f = self.horizon_factor;
+        if !(f == T::ZERO || f > T::ONE) {
+            return Err(CaError::InvalidParameter("horizon_factor"));
         }
         if self.max_iterations == 0 {
             return Err(CaError::InvalidParameter("max_iterations"));

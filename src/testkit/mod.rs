@@ -277,3 +277,20 @@ impl SplitMix64 {
 pub fn random_blob<T: Float>(rng: &mut SplitMix64, count: usize) -> Vec<[T; 3]> {
     (0..count).map(|_| rng.vec3().map(T::from_f64)).collect()
 }
+
+/// The oriented box `BallTree` fits to a node's corners (`proofs/floating-point.md`,
+/// "Oriented box"): its centre and its certified support about the centre
+/// along each of `directions` (body frame, no rotation), for tests that
+/// check containment with an independent computation.
+#[must_use]
+pub fn oriented_box_supports<T: Float>(
+    points: &[[T; 3]],
+    directions: &[[T; 3]],
+) -> ([T; 3], Vec<T>) {
+    let b = crate::bvh::OrientedBox::fit(points.iter());
+    let s = directions
+        .iter()
+        .map(|&m| b.support_up(Vec3::from_array(m), T::ZERO))
+        .collect();
+    (b.centre, s)
+}

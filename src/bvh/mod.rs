@@ -4,22 +4,26 @@
 
 use alloc::vec::Vec;
 
-use crate::rounding::{gamma, offset_radius_up};
+mod eigen;
+mod oriented_box;
+
+pub(crate) use oriented_box::OrientedBox;
+
+use crate::rounding::offset_radius_up;
 use crate::{BoundingBall, Float, InputError};
 
 /// Marks a leaf in [`Node::right`].
 const LEAF: u32 = u32::MAX;
 
-/// A node: its bounding ball and either two children or one leaf.
+/// A node: its bounding ball and box, and either two children or one leaf.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Node<T> {
-    /// Contains every point of every triangle below the node.
+    /// Contains every point of every triangle below the node; centred at the
+    /// box's centre. What the node's directed bound is computed from.
     pub(crate) ball: BoundingBall<T>,
-    /// Half extents of the node's body-frame box, centred at the ball's
-    /// centre and holding every corner (rounded up).
-    pub(crate) half: [T; 3],
-    /// `|half|_1`, rounded up.
-    pub(crate) half_l1: T,
+    /// Contains every point of every triangle below the node, tightly: what
+    /// the node's gap is measured with.
+    pub(crate) obb: OrientedBox<T>,
     /// The left child, or the leaf's index when `right == LEAF`.
     pub(crate) left: u32,
     /// The right child, or `LEAF`.
@@ -46,13 +50,16 @@ pub(crate) struct Leaf<T> {
     pub(crate) triangle: u32,
 }
 
-/// A triangle mesh with its ball hierarchy, built once per body.
+/// A triangle mesh with its bounding-volume hierarchy, built once per body.
 ///
 /// Vertices are offsets from the body's rotation centre at the epoch (the
-/// crate's convention for body points). Every node's ball contains every
-/// point of its triangles in exact arithmetic (radii rounded up,
-/// `proofs/09-ca-toi.md`), and its directed bound costs `O(1)`
-/// ([`DirectedProbe::ball_speed`](crate::DirectedProbe::ball_speed)).
+/// crate's convention for body points). Each node has two volumes, each
+/// certified to contain every point of its triangles in exact arithmetic:
+/// an oriented box along the principal axes of its corners (what gaps are
+/// measured with; thin for a flat patch, `proofs/floating-point.md`,
+/// "Oriented box") and a ball centred at the box's centre (what the node's
+/// directed bound is computed from, in `O(1)`:
+/// [`DirectedProbe::ball_speed`](crate::DirectedProbe::ball_speed)).
 ///
 /// Built top-down: split at the median of the triangle centroids along the
 /// widest axis, one triangle per leaf; `2 N - 1` nodes for `N` triangles.
@@ -61,6 +68,9 @@ pub struct BallTree<T> {
     pub(crate) nodes: Vec<Node<T>>,
     pub(crate) leaves: Vec<Leaf<T>>,
     depth: usize,
+    /// An upper bound of the distance from the rotation centre of every
+    /// node centre and every box point.
+    pub(crate) reach: T,
 }
 
 impl<T: Float> BallTree<T> {
@@ -98,9 +108,15 @@ impl<T: Float> BallTree<T> {
             nodes: Vec::with_capacity(2 * leaves.len()),
             leaves: Vec::new(),
             depth: 0,
+            reach: T::ZERO,
         };
         tree.depth = tree.build(&leaves, &mut order, 1)?;
         tree.leaves = leaves;
+        let reach = tree.nodes.iter().fold(T::ZERO, |m, n| {
+            m.max_nan(n.obb.reach_up())
+                .max_nan(n.ball.outer_radius_up())
+        });
+        tree.reach = reach;
         Ok(tree)
     }
 
@@ -112,13 +128,11 @@ impl<T: Float> BallTree<T> {
         depth: usize,
     ) -> Result<usize, InputError> {
         let index = self.nodes.len();
-        let (ball, half) = enclosing_ball(order.iter().map(|&l| &leaves[l as usize].corners))?;
-        let half_l1 = (half[0] + half[1] + half[2]) * (T::ONE + gamma::<T>(2));
+        let (ball, obb) = enclosing_volumes(order.iter().map(|&l| &leaves[l as usize].corners))?;
         if let [only] = order {
             self.nodes.push(Node {
                 ball,
-                half,
-                half_l1,
+                obb,
                 left: *only,
                 right: LEAF,
             });
@@ -126,8 +140,7 @@ impl<T: Float> BallTree<T> {
         }
         self.nodes.push(Node {
             ball,
-            half,
-            half_l1,
+            obb,
             left: 0,
             right: 0,
         });
@@ -215,24 +228,14 @@ impl<T: Float> BallTree<T> {
     }
 }
 
-/// A ball holding every corner: centred at the corners' bounding-box centre,
-/// radius the largest corner distance rounded up (`rounding::offset_radius_up`);
-/// and the box's half extents about that centre, rounded up
-/// (`fl(fl(x)(1 + gamma_2)) >= x` for the exact `x = max(hi - c, c - lo)`).
-fn enclosing_ball<'a, T: Float + 'a>(
+/// The node's oriented box (`OrientedBox::fit`) and a ball centred at the
+/// box's centre holding every corner, its radius the largest corner distance
+/// rounded up (`rounding::offset_radius_up`).
+fn enclosing_volumes<'a, T: Float + 'a>(
     tris: impl Iterator<Item = &'a [[T; 3]; 3]> + Clone,
-) -> Result<(BoundingBall<T>, [T; 3]), InputError> {
-    let (mut lo, mut hi) = ([T::INFINITY; 3], [-T::INFINITY; 3]);
-    for tri in tris.clone() {
-        for c in tri {
-            for k in 0..3 {
-                lo[k] = lo[k].min_nan(c[k]);
-                hi[k] = hi[k].max_nan(c[k]);
-            }
-        }
-    }
-    // (lo + hi) / 2 without overflow: both are valid inputs.
-    let centre = [0, 1, 2].map(|k| lo[k] * T::HALF + hi[k] * T::HALF);
+) -> Result<(BoundingBall<T>, OrientedBox<T>), InputError> {
+    let obb = OrientedBox::fit(tris.clone().flatten());
+    let centre = obb.centre;
     let mut max_sq = T::ZERO;
     for tri in tris {
         for c in tri {
@@ -240,12 +243,9 @@ fn enclosing_ball<'a, T: Float + 'a>(
             max_sq = max_sq.max_nan(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         }
     }
-    let half = [0, 1, 2].map(|k| {
-        (hi[k] - centre[k]).max_nan(centre[k] - lo[k]) * (T::ONE + gamma::<T>(2)) + T::ETA
-    });
     Ok((
         BoundingBall::try_new(centre, offset_radius_up(max_sq))?,
-        half,
+        obb,
     ))
 }
 
