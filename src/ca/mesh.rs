@@ -89,7 +89,7 @@ impl<'a, T: Float> MeshPair<'a, T> {
 
     /// Takes a node pair's own step, without splitting it, when the gap
     /// between its volumes is at least `ratio` times the sum of its balls'
-    /// radii (default 4): below such a pair the gap grows by at most
+    /// radii (default 2): below such a pair the gap grows by at most
     /// `2 / ratio` of itself, so splitting it buys little step and costs a
     /// descent. `+inf` (or NaN, or a negative ratio) always splits.
     #[must_use]
