@@ -306,21 +306,22 @@ fn run_size(args: &Args, size: TorusKnotSize, parry_per_triangle: &mut Option<f6
         scene.trees[0].depth()
     );
 
-    // Ours, NEVQ and EVQ interleaved (alternating which goes first).
+    // Ours, NEVQ and EVQ interleaved (rotating which goes first), and EVQ
+    // stepping as the seed does (absolute bounds over the rest of the
+    // interval: no one-sided rates, no horizon), to show what those add.
     let (pn, pe) = (
         KnotScene::params(BoundChoice::Nevq),
         KnotScene::params(BoundChoice::Evq),
     );
+    let pa = pe.with_one_sided(false).with_horizon_factor(0.0);
     for q in scene.queries.iter().take(ORIENTATIONS) {
-        std::hint::black_box((scene.ours(q, &pn), scene.ours(q, &pe)));
+        std::hint::black_box((scene.ours(q, &pn), scene.ours(q, &pe), scene.ours(q, &pa)));
     }
-    let (mut nevq, mut evq) = (Run::default(), Run::default());
+    let (mut nevq, mut evq, mut evq_abs) = (Run::default(), Run::default(), Run::default());
     for (i, q) in scene.queries.iter().enumerate() {
-        let order: [(&mut Run, _); 2] = if i % 2 == 0 {
-            [(&mut nevq, &pn), (&mut evq, &pe)]
-        } else {
-            [(&mut evq, &pe), (&mut nevq, &pn)]
-        };
+        let mut order: [(&mut Run, _); 3] =
+            [(&mut nevq, &pn), (&mut evq, &pe), (&mut evq_abs, &pa)];
+        order.rotate_left(i % 3);
         for (run, params) in order {
             let start = Instant::now();
             let (report, stats) = scene.ours(q, params);
@@ -363,6 +364,13 @@ fn run_size(args: &Args, size: TorusKnotSize, parry_per_triangle: &mut Option<f6
     };
     let sn = row("NEVQ", &nevq, seed_nevq_ms, seed_nevq_it);
     let se = row("EVQ", &evq, seed_evq_ms, seed_evq_it);
+    let sa = row("EVQ-s", &evq_abs, seed_evq_ms, seed_evq_it);
+    println!(
+        "   EVQ-s: EVQ as the seed steps (absolute speeds over the rest of the interval); \
+         EVQ-s/EVQ time {:.2}, iterations {:.2}",
+        sa.0 / se.0,
+        sa.2 / se.2
+    );
     for (name, r) in [("NEVQ", &nevq), ("EVQ", &evq)] {
         println!(
             "   {name:<5} outcomes: {} contacts ({} initial, {} by time tolerance), {} separated, {} iteration limit",

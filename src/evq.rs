@@ -141,3 +141,47 @@ pub(crate) fn arc_scan<T: Float>(
     }
     Some(best)
 }
+
+/// The one-sided EVQ scan: `S = max_i max_{arc} u(theta) . q_i` (signed; the
+/// largest rotational speed along `+c`, divided by `|c|`), over the points'
+/// rotation-plane coordinates `q_i = (r_i . e1, r_i . e2)`; `-inf` for no
+/// point.
+///
+/// Per point (`proofs/10-one-sided.md`, Lemma 10.1): the arc (sweep below
+/// pi) reaches `+q` exactly when its ends lie on opposite sides of the line
+/// through `q` (`g_a g_b <= 0`) and `f_a + f_b >= 0`; then the value is `|q|`,
+/// otherwise `max(f_a, f_b)`. The test `|c| (f_a + f_b) >= -slack`, with
+/// `slack` twice the evaluation error of one `f` times `|c|` (an absolute
+/// amount, `rounding::one_sided_decision_slack`), can only err towards `|q|`.
+#[inline]
+pub(crate) fn arc_signed_scan<T: Float>(
+    vertices: &[[T; 3]],
+    e1: Vec3<T>,
+    e2: Vec3<T>,
+    ua: (T, T),
+    ub: (T, T),
+    c_norm: T,
+    slack: T,
+) -> T {
+    let mut reach_sq = -T::INFINITY;
+    let mut best_f = -T::INFINITY;
+    for r in vertices {
+        let r = Vec3::from_array(*r);
+        let x = r.dot(e1);
+        let y = r.dot(e2);
+        let ga = ua.0 * y - ua.1 * x;
+        let gb = ub.0 * y - ub.1 * x;
+        let fa = ua.0 * x + ua.1 * y;
+        let fb = ub.0 * x + ub.1 * y;
+        if ga * gb <= T::ZERO && c_norm * (fa + fb) >= -slack {
+            reach_sq = reach_sq.max_nan(x * x + y * y);
+        } else {
+            best_f = best_f.max_nan(fa.max_nan(fb));
+        }
+    }
+    if reach_sq >= T::ZERO {
+        best_f.max_nan(reach_sq.sqrt())
+    } else {
+        best_f
+    }
+}

@@ -2,9 +2,11 @@
 //! vertex sets, bounding balls, body summaries.
 
 use crate::bound::Projection;
-use crate::evq::{arc_scan, full_turn_scan};
+use crate::evq::{arc_scan, arc_signed_scan, full_turn_scan};
 use crate::nevq::nevq_speed_from;
-use crate::rounding::{assemble, evq_rotational_up, gamma, nevq_rotational_up};
+use crate::rounding::{
+    assemble, evq_rotational_up, gamma, nevq_rotational_up, one_sided_decision_slack, one_sided_up,
+};
 use crate::{
     BodySummary, BoundKind, BoundingBall, Direction, Float, PreparedMotion, SweptArc, Vec3,
     VertexSet,
@@ -154,6 +156,96 @@ impl<T: Float> DirectedProbe<T> {
         // `proofs/floating-point.md`, section "Ball".
         let rot = (centre + rim) * (T::ONE + gamma::<T>(2));
         assemble(linear, rot).min_nan(nevq)
+    }
+
+    /// The one-sided speed bound of kind `kind` for every point of a ball:
+    /// an upper bound of the *signed* speed `d/dt (p(t) . n)` (along the
+    /// exact unit `n/|n|`) over the motion's interval, for every point `p`
+    /// of the ball. Negative when every point of the ball recedes along `n`
+    /// throughout, and never above [`ball_speed`](Self::ball_speed).
+    ///
+    /// Conservative advancement needs only this one side: two bodies
+    /// separated along `n` close at most at the rate of A along `n` plus
+    /// the rate of B along `-n` (`proofs/10-one-sided.md`, Lemma 10.2), so a
+    /// body moving away, or turning its near side away, no longer counts
+    /// against the step as it does with the absolute `|v.n| + ...` of the
+    /// seed's bounds. EVQ's one-sided term asks, per point, whether the arc
+    /// reaches the point's direction `+q` (not the line `+-q`): Lemma 10.1.
+    ///
+    /// ```
+    /// use motion_bound::{BoundKind, BoundingBall, Direction, PreparedMotion, RigidMotion};
+    /// // A ball of radius 0.1 centred 1 along x, turning at 0.1 rad/s about z
+    /// // (so its centre moves along +y), and drifting along -y at 1.
+    /// let ball = BoundingBall::try_new([1.0, 0.0, 0.0], 0.1).unwrap();
+    /// let m = RigidMotion::try_from_arrays([0.0; 3], [0.0, -1.0, 0.0], [0.0, 0.0, 0.1]).unwrap();
+    /// let probe = PreparedMotion::new(&m).probe(Direction::Y);
+    /// let rate = probe.ball_rate(&ball, BoundKind::Evq);
+    /// // A point at x along the ball moves along y at -1 + 0.1 x cos(theta): at
+    /// // most -1 + 0.11 = -0.89, at the rim's far point at t = 0.
+    /// assert!(rate >= -0.89 && rate < -0.889);
+    /// assert!(probe.ball_speed(&ball, BoundKind::Evq) > 1.0); // the absolute bound
+    /// ```
+    #[must_use]
+    pub fn ball_rate(&self, ball: &BoundingBall<T>, kind: BoundKind) -> T {
+        let nevq_rot = nevq_rotational_up(self.p.c_norm, self.p.w_l1, ball.outer_radius_up());
+        let nevq = one_sided_up(self.p.a, self.p.a_mag, nevq_rot, nevq_rot, T::ZERO);
+        if kind == BoundKind::Nevq || !self.usable {
+            return nevq;
+        }
+        let r_hat = ball.centre_norm_up();
+        let s = self.signed_extremal(core::slice::from_ref(ball.centre()), r_hat);
+        // The centre's term: |c| S^ and its error; the rim adds |c| rho.
+        let margin =
+            evq_rotational_up(self.p.c_norm, T::ZERO, self.arc.theta_m, self.p.w_l1, r_hat)
+                + nevq_rotational_up(self.p.c_norm, self.p.w_l1, ball.radius());
+        let rot = self.p.c_norm * s;
+        one_sided_up(self.p.a, self.p.a_mag, rot, rot.abs(), margin).min_nan(nevq)
+    }
+
+    /// The one-sided speed bound of kind `kind` for a vertex set (see
+    /// [`ball_rate`](Self::ball_rate)): an upper bound of the signed speed
+    /// `d/dt (r_i(t) . n)` of every vertex over the motion's interval.
+    #[must_use]
+    pub fn rate(&self, body: &VertexSet<'_, T>, kind: BoundKind) -> T {
+        self.points_rate(body.vertices(), body.summary().max_radius(), kind)
+    }
+
+    /// [`rate`](Self::rate) over `points`, all within `r_hat` of the
+    /// rotation centre (`r_hat` rounded up as by `rounding::radius_up`).
+    #[inline]
+    pub(crate) fn points_rate(&self, points: &[[T; 3]], r_hat: T, kind: BoundKind) -> T {
+        let nevq_rot = nevq_rotational_up(self.p.c_norm, self.p.w_l1, r_hat);
+        let nevq = one_sided_up(self.p.a, self.p.a_mag, nevq_rot, nevq_rot, T::ZERO);
+        if kind == BoundKind::Nevq || !self.usable || points.is_empty() {
+            return nevq;
+        }
+        let s = self.signed_extremal(points, r_hat);
+        let margin =
+            evq_rotational_up(self.p.c_norm, T::ZERO, self.arc.theta_m, self.p.w_l1, r_hat);
+        let rot = self.p.c_norm * s;
+        one_sided_up(self.p.a, self.p.a_mag, rot, rot.abs(), margin).min_nan(nevq)
+    }
+
+    /// `S^ = max_i max_arc u . q_i` (signed) over `points` within `r_hat`
+    /// of the rotation centre; only called when the rotation is trusted.
+    #[inline]
+    fn signed_extremal(&self, points: &[[T; 3]], r_hat: T) -> T {
+        if self.arc.full_turn {
+            // Every point's direction is reached: its distance from the axis.
+            full_turn_scan(points, self.arc.axis, T::INFINITY).map_or(T::INFINITY, |sq| sq.sqrt())
+        } else {
+            let slack =
+                one_sided_decision_slack(self.p.c_norm, self.arc.theta_m, self.p.w_l1, r_hat);
+            arc_signed_scan(
+                points,
+                self.e1,
+                self.e2,
+                self.arc.ua,
+                self.arc.ub,
+                self.p.c_norm,
+                slack,
+            )
+        }
     }
 
     /// `E^2 = max_i max_arc (u . q_i)^2` over `points`, or `None` when the EVQ

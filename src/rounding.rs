@@ -68,6 +68,50 @@ pub(crate) fn evq_rotational_up<T: Float>(c_norm: T, e_hat: T, theta_m: T, w_l1:
         + T::from_u32(16) * T::ETA * (T::ONE + r_hat) * (T::ONE + c_norm)
 }
 
+/// Section "One-sided": twice the error bound of one computed endpoint value
+/// `f = u . q` of the EVQ scan, times `|c|`, for points within `R^` of the
+/// rotation centre: `|c| tau R^ = 2 ((48 + 12 theta_m) u fl|c| + 24 u |w|_1) R^`,
+/// rounded up. The one-sided scan's decision `fl|c| (f_a + f_b) >= -|c| tau R^`
+/// then never misses an arc that reaches `+q`.
+#[inline]
+#[must_use]
+pub(crate) fn one_sided_decision_slack<T: Float>(c_norm: T, theta_m: T, w_l1: T, r_hat: T) -> T {
+    let u = T::UNIT_ROUNDOFF;
+    let t = T::TWO
+        * ((T::from_u32(48) + T::from_u32(12) * theta_m) * u * c_norm + T::from_u32(24) * u * w_l1)
+        * r_hat
+        * (T::ONE + gamma::<T>(6));
+    if t.is_nan() {
+        T::INFINITY
+    } else {
+        t
+    }
+}
+
+/// Section "One-sided": an upper bound of the signed speed along the exact
+/// unit `n/|n|` from `fl(v.n) = a` (error magnitude `a_mag`), a signed
+/// rotational estimate `rot` and the non-negative `margin` that bounds the
+/// rotational estimate's error (so the exact rotational speed is at most
+/// `rot + margin`, with `|rot|` also counted in `mag`):
+/// `X = a + rot + margin + gamma_24 (a_mag + mag + margin)`, then times
+/// `1 + gamma_6` if `X >= 0` and `1 - gamma_6` if not (the direction's
+/// length, `1/|n| in [1 - gamma_5, 1 + gamma_5]`). NaN gives `+inf`.
+#[inline]
+#[must_use]
+pub(crate) fn one_sided_up<T: Float>(a: T, a_mag: T, rot: T, mag: T, margin: T) -> T {
+    let x = a + rot + margin + gamma::<T>(24) * (a_mag + mag + margin);
+    let x = if x >= T::ZERO {
+        x * (T::ONE + gamma::<T>(6))
+    } else {
+        x * (T::ONE - gamma::<T>(6))
+    };
+    if x.is_nan() {
+        T::INFINITY
+    } else {
+        x
+    }
+}
+
 /// Section "Assembly": the final factor `1 + gamma_16` covers the direction's
 /// normalisation (`1/|n| <= 1 + gamma_5`) and the rounding of the evaluation
 /// of the non-negative margin expression (at most 10 operations). A NaN can
@@ -156,7 +200,8 @@ pub(crate) fn gap_down<T: Float>(gap: T, pose_err_a: T, pose_err_b: T, reach_sum
 /// Section "Step": a time step no longer than `gap / (mu_a + mu_b)`, the
 /// longest step over which points moving along `n` at speeds at most `mu_a`
 /// and `mu_b` cannot close the gap: `fl(fl(gap / fl((mu_a + mu_b)(1 + gamma_2))) (1 - gamma_2))`.
-/// `+inf` when nothing moves; `0` for a non-positive gap or a NaN.
+/// `+inf` when nothing closes (`mu_a + mu_b <= 0`: one-sided rates may be
+/// negative); `0` for a non-positive gap or a NaN.
 #[inline]
 #[must_use]
 pub(crate) fn step_down<T: Float>(gap: T, mu_a: T, mu_b: T) -> T {
@@ -164,7 +209,12 @@ pub(crate) fn step_down<T: Float>(gap: T, mu_a: T, mu_b: T) -> T {
         return T::ZERO;
     }
     let mu = (mu_a + mu_b) * (T::ONE + gamma::<T>(2));
-    if mu == T::ZERO {
+    if mu.is_nan() {
+        return T::ZERO;
+    }
+    // One-sided rates may be negative: a pair that cannot close over the
+    // bounds' interval has no limit on its step (`proofs/10-one-sided.md`).
+    if mu <= T::ZERO {
         return T::INFINITY;
     }
     let s = gap / mu * (T::ONE - gamma::<T>(2));

@@ -106,15 +106,15 @@ fn run_meshes(scene: &str, a: &TriMesh<f64>, b: &TriMesh<f64>, spin: f64, n: usi
     run_meshes_with(scene, (a, b), spin, n, seed, |_| None);
 }
 
-/// As [`run_meshes`], with query `k` using `(horizon factor, far ratio)`
-/// from `settings(k)` when it gives one.
+/// As [`run_meshes`], with query `k` using `(horizon factor, far ratio,
+/// one-sided bounds)` from `settings(k)` when it gives one.
 fn run_meshes_with(
     scene: &str,
     (a, b): (&TriMesh<f64>, &TriMesh<f64>),
     spin: f64,
     n: usize,
     seed: u64,
-    settings: impl Fn(usize) -> Option<(f64, f64)>,
+    settings: impl Fn(usize) -> Option<(f64, f64, bool)>,
 ) {
     let mut rng = Rng::new(seed);
     let (oa, ob) = (oriented(a, 4, &mut rng), oriented(b, 4, &mut rng));
@@ -130,8 +130,10 @@ fn run_meshes_with(
             .with_contact_distance(eps)
             .with_bound(bound);
         let mut pair = MeshPair::new(ta, tb);
-        if let Some((horizon, far)) = settings(k) {
-            params = params.with_horizon_factor(horizon);
+        if let Some((horizon, far, one_sided)) = settings(k) {
+            params = params
+                .with_horizon_factor(horizon)
+                .with_one_sided(one_sided);
             pair = pair.with_far_ratio(far);
         }
         let report = time_of_impact(&mut pair, &q.a, &q.b, &params).expect("valid query");
@@ -157,17 +159,18 @@ fn torus_knots_with_rotation_are_never_late_and_never_missed() {
 #[test]
 fn horizon_and_far_ratio_stay_sound() {
     // The time-resolved step off, short and long horizons; never settling a
-    // pair, settling eagerly and rarely (`proofs/09-ca-toi.md`, Lemma 9.3).
+    // pair, settling eagerly and rarely (`proofs/09-ca-toi.md`, Lemma 9.3);
+    // the seed's absolute bounds and the one-sided ones (Lemma 10.2).
     let knot = TorusKnot::TREFOIL.mesh::<f64>(60, 8).expect("knot");
     let horizons = [0.0, 1.5, 8.0];
     let far = [f64::INFINITY, 0.5, 16.0];
     run_meshes_with(
-        "knot vs knot, other horizons and far ratios",
+        "knot vs knot, other horizons, far ratios, absolute bounds",
         (&knot, &knot),
         6.0,
         queries_per_scene(90),
         11,
-        |k| Some((horizons[k % 3], far[(k / 3) % 3])),
+        |k| Some((horizons[(k / 3) % 3], far[(k / 9) % 3], (k / 27) % 2 == 0)),
     );
 }
 

@@ -3,14 +3,18 @@
 //! least the high-precision exact values, and EVQ's are at most NEVQ's; the
 //! same again on a sub-interval picked by two fractions of the input
 //! (`RigidMotion::restrict`, what a conservative-advancement step does).
+//! The one-sided rates of both kinds (`DirectedProbe::rate`, along `n` and
+//! `-n`) are at least the exact largest signed speeds, and EVQ's at most
+//! NEVQ's.
 
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
 use motion_bound::testkit::{Case, CaseSpec};
-use motion_bound::{evq, nevq};
+use motion_bound::{evq, nevq, BoundKind, PreparedMotion};
 use motion_bound_fuzz::{
-    build_case, check_evq_le_nevq, check_sound, clamp, in_precision, vertex_set, Oracle, Precision,
+    build_case, check_evq_le_nevq, check_one_sided, check_sound, clamp, in_precision, vertex_set,
+    Oracle, Precision,
 };
 
 fn check<T: Precision>(sub: bool, case: &Case<T>) {
@@ -26,6 +30,17 @@ fn check<T: Precision>(sub: bool, case: &Case<T>) {
     check_sound(we, &oracle, e, case);
     check_sound(wn, &oracle, n, case);
     check_evq_le_nevq(e, n, case);
+    let prepared = PreparedMotion::new(&case.motion);
+    let (plus, minus) = (prepared.probe(case.n), prepared.probe(-case.n));
+    let rates = |kind| (plus.rate(&body, kind), minus.rate(&body, kind));
+    let (re, rn) = (rates(BoundKind::Evq), rates(BoundKind::Nevq));
+    check_one_sided(we, &oracle, re, case);
+    check_one_sided(wn, &oracle, rn, case);
+    assert!(
+        re.0 <= rn.0 && re.1 <= rn.1,
+        "({}) one-sided EVQ {re:?} above one-sided NEVQ {rn:?}; case {case:?}",
+        T::NAME
+    );
 }
 
 fn run<T: Precision>(spec: &CaseSpec, fa: u16, fb: u16) {

@@ -26,7 +26,7 @@ use motion_bound::{
 pub mod oracle;
 pub mod seeds;
 
-pub use oracle::{check_sound, Oracle, Scaled};
+pub use oracle::{check_one_sided, check_sound, Oracle, Scaled};
 
 /// Vertices of a [`CaseSpec`] beyond this many are dropped before the case is
 /// built: the high-precision oracle costs microseconds per vertex, and a

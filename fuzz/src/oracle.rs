@@ -249,6 +249,10 @@ pub struct Oracle<T: Precision> {
     pub sup: T::R,
     /// `t_b - t_a` of the original case.
     pub length: T::R,
+    /// The largest signed speeds `sup_t max_i p_i'(t) . n` along `+n` and
+    /// along `-n`, in the scaled units of `sup`: what one-sided bounds
+    /// (`DirectedProbe::rate`) must dominate.
+    pub sup_signed: (T::R, T::R),
 }
 
 impl<T: Precision> Oracle<T> {
@@ -280,11 +284,23 @@ impl<T: Precision> Oracle<T> {
             prof.a = a;
             m.max(prof.sup_abs(ta, tb))
         });
+        let lowest = r(f64::NEG_INFINITY);
+        let sup_signed = c.vertices.iter().fold((lowest, lowest), |(p, q), v| {
+            let mut prof = frame.profile(*v);
+            prof.a = a;
+            let plus = prof.sup_signed(ta, tb);
+            let zero = r(0.0);
+            prof.a = zero.sub(prof.a);
+            prof.p = zero.sub(prof.p);
+            prof.q = zero.sub(prof.q);
+            (p.max(plus), q.max(prof.sup_signed(ta, tb)))
+        });
         let (ta, tb) = ends(&case.motion);
         Self {
             scaled,
             sup,
             length: tb.sub(ta),
+            sup_signed,
         }
     }
 
@@ -351,6 +367,43 @@ pub fn check_sound<T: Precision>(
         ldexp(prod, le - e),
         le - e
     );
+}
+
+/// The one-sided oracle: `rates = (along +n, along -n)` are not NaN and at
+/// least the exact largest signed speeds (which may be negative), compared
+/// exactly on exponents as in [`check_sound`].
+pub fn check_one_sided<T: Precision>(
+    what: &str,
+    oracle: &Oracle<T>,
+    rates: (T, T),
+    context: &dyn Debug,
+) {
+    let name = T::NAME;
+    let e = oracle.scaled.speed_exp;
+    for (side, rate, sup) in [
+        ("+n", rates.0, oracle.sup_signed.0),
+        ("-n", rates.1, oracle.sup_signed.1),
+    ] {
+        let (x, y) = (rate.to_f64(), sup.to_f64());
+        assert!(
+            !x.is_nan() && !y.is_nan(),
+            "{what} ({name}) along {side}: NaN rate {x:?} or oracle {y:?}; case {context:?}"
+        );
+        let ok = if x >= 0.0 {
+            // rate >= sup 2^-e
+            ge_scaled(x, e, y)
+        } else {
+            // a negative rate needs a negative sup at least as far below 0:
+            // |sup| 2^-e >= |rate|
+            y < 0.0 && ge_scaled(-y, -e, -x)
+        };
+        assert!(
+            ok,
+            "{what} ({name}) along {side}: one-sided rate {x:e} ({x:?}) below the exact signed sup {:e} (2^{} x {y:?}); oracle {oracle:?}; case {context:?}",
+            ldexp(y, -e),
+            -e
+        );
+    }
 }
 
 #[cfg(test)]

@@ -61,8 +61,18 @@ impl<T: Float> CaStep<T> for BallPair<T> {
         let (ea, pa) = placement_error(a.motion(), t, self.a.outer_radius_up());
         let (eb, pb) = placement_error(b.motion(), t, self.b.outer_radius_up());
         let kind = params.bound.cheap_kind();
-        let mu_a = a.probe(n).ball_speed(&self.a, kind);
-        let mu_b = b.probe(n).ball_speed(&self.b, kind);
+        // One-sided (Lemma 10.2): A along n, B along -n.
+        let (mu_a, mu_b) = if params.one_sided {
+            (
+                a.probe(n).ball_rate(&self.a, kind),
+                b.probe(-n).ball_rate(&self.b, kind),
+            )
+        } else {
+            (
+                a.probe(n).ball_speed(&self.a, kind),
+                b.probe(n).ball_speed(&self.b, kind),
+            )
+        };
         // Along n the balls span [ca.n - ra, ca.n + ra] and [cb.n - rb, cb.n + rb].
         let gap = d.dot(nv) - ra - rb;
         let (step, _) = gap_step(gap, (ea, eb), (pa, pb), (mu_a, mu_b));

@@ -29,7 +29,8 @@ impl<T, F: FnMut(&Pose<T>, &Pose<T>) -> Option<Witness<T>>> Proximity<T> for F {
 /// Each step places both vertex sets, measures the gap along the oracle's
 /// closest direction, and bounds each body's directed speed with the bound
 /// chosen by [`CaParams::bound`]: with [`BoundChoice::Auto`], NEVQ first and
-/// EVQ (`O(N)`) only when NEVQ's step would not end the query.
+/// EVQ (`O(N)`) only when NEVQ's step would not end the query; one-sided
+/// (closing-rate) bounds unless [`CaParams::one_sided`] is off.
 ///
 /// ```
 /// use motion_bound::ca::{time_of_impact, CaParams, ConvexPair, Witness};
@@ -125,15 +126,16 @@ impl<T: Float, P: Proximity<T>> CaStep<T> for ConvexPair<'_, T, P> {
         let gap = extent(&pose_b, &self.b, nv, false) - extent(&pose_a, &self.a, nv, true);
         let (ea, ra) = placement_error(a.motion(), t, self.a.summary().max_radius());
         let (eb, rb) = placement_error(b.motion(), t, self.b.summary().max_radius());
-        let (pa, pb) = (a.probe(n), b.probe(n));
+        // One-sided (Lemma 10.2): A along n, B along -n; or the seed's
+        // absolute speeds (Lemma 9.1).
+        let (pa, pb) = (a.probe(n), b.probe(if params.one_sided { -n } else { n }));
         let step_with = |kind| {
-            gap_step(
-                gap,
-                (ea, eb),
-                (ra, rb),
-                (pa.speed(&self.a, kind), pb.speed(&self.b, kind)),
-            )
-            .0
+            let mu = if params.one_sided {
+                (pa.rate(&self.a, kind), pb.rate(&self.b, kind))
+            } else {
+                (pa.speed(&self.a, kind), pb.speed(&self.b, kind))
+            };
+            gap_step(gap, (ea, eb), (ra, rb), mu).0
         };
         let step = match params.bound {
             BoundChoice::Nevq => step_with(BoundKind::Nevq),

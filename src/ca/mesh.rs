@@ -6,10 +6,10 @@ use crate::bvh::{BallTree, Leaf};
 use crate::ca::driver::{gap_step, placement_error};
 use crate::ca::{CaParams, CaStep, StepResult, Witness};
 use crate::geometry::closest::triangle_triangle;
-use crate::{BoundKind, Direction, Float, Pose, PreparedMotion, Vec3};
+use crate::{BoundKind, BoundingBall, Direction, Float, Pose, PreparedMotion, Vec3};
 
 /// The default of [`MeshPair::with_far_ratio`].
-const FAR_RATIO: f64 = 2.0;
+const FAR_RATIO: f64 = 4.0;
 
 /// Work counters of a [`MeshPair`], summed over every step since the last
 /// [`MeshPair::reset_stats`]: what a profile of the query needs.
@@ -89,7 +89,7 @@ impl<'a, T: Float> MeshPair<'a, T> {
 
     /// Takes a node pair's own step, without splitting it, when the gap
     /// between its volumes is at least `ratio` times the sum of its balls'
-    /// radii (default 2): below such a pair the gap grows by at most
+    /// radii (default 4): below such a pair the gap grows by at most
     /// `2 / ratio` of itself, so splitting it buys little step and costs a
     /// descent. `+inf` (or NaN, or a negative ratio) always splits.
     #[must_use]
@@ -145,6 +145,65 @@ impl<T: Float> Placed<'_, T> {
             _ => probe.evq_speed_points(&leaf.corners, leaf.r_hat),
         }
     }
+
+    /// The one-sided rate of a leaf's corners along `n`.
+    fn leaf_rate(&self, leaf: &Leaf<T>, n: Direction<T>, kind: BoundKind) -> T {
+        self.motion
+            .probe(n)
+            .points_rate(&leaf.corners, leaf.r_hat, kind)
+    }
+}
+
+/// How a pair's closing speed along `n` (from A to B) is bounded.
+#[derive(Clone, Copy)]
+struct Rates {
+    kind: BoundKind,
+    one_sided: bool,
+}
+
+impl Rates {
+    /// Bounds on the speeds of A and B whose sum bounds the rate at which
+    /// the slab between them along `n` closes: one-sided rates of A along
+    /// `n` and B along `-n` (Lemma 10.2), or the absolute speeds (Lemma 9.1).
+    fn balls<T: Float>(
+        self,
+        pa: &Placed<'_, T>,
+        pb: &Placed<'_, T>,
+        balls: (&BoundingBall<T>, &BoundingBall<T>),
+        n: Direction<T>,
+    ) -> (T, T) {
+        if self.one_sided {
+            (
+                pa.motion.probe(n).ball_rate(balls.0, self.kind),
+                pb.motion.probe(-n).ball_rate(balls.1, self.kind),
+            )
+        } else {
+            (
+                pa.motion.probe(n).ball_speed(balls.0, self.kind),
+                pb.motion.probe(n).ball_speed(balls.1, self.kind),
+            )
+        }
+    }
+
+    fn leaves<T: Float>(
+        self,
+        pa: &Placed<'_, T>,
+        pb: &Placed<'_, T>,
+        leaves: (&Leaf<T>, &Leaf<T>),
+        n: Direction<T>,
+    ) -> (T, T) {
+        if self.one_sided {
+            (
+                pa.leaf_rate(leaves.0, n, self.kind),
+                pb.leaf_rate(leaves.1, -n, self.kind),
+            )
+        } else {
+            (
+                pa.leaf_speed(leaves.0, n, self.kind),
+                pb.leaf_speed(leaves.1, n, self.kind),
+            )
+        }
+    }
 }
 
 impl<T: Float> MeshPair<'_, T> {
@@ -159,7 +218,7 @@ impl<T: Float> MeshPair<'_, T> {
         pb: &Placed<'_, T>,
         i: u32,
         j: u32,
-        kind: BoundKind,
+        rates: Rates,
     ) -> (T, bool) {
         let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
         let d = pb.centre(self.b, j) - pa.centre(self.a, i);
@@ -198,10 +257,7 @@ impl<T: Float> MeshPair<'_, T> {
         // Orient n from A to B: the slab gap is measured along it.
         let n = if d.dot(n.get()) < T::ZERO { -n } else { n };
         self.stats.bounds += 2;
-        let mu = (
-            pa.motion.probe(n).ball_speed(&na.ball, kind),
-            pb.motion.probe(n).ball_speed(&nb.ball, kind),
-        );
+        let mu = rates.balls(pa, pb, (&na.ball, &nb.ball), n);
         let far = gap >= self.far_ratio * (na.ball.radius() + nb.ball.radius());
         (
             gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu).0,
@@ -289,7 +345,10 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             reach,
             angle: b.motion().angle_at(t),
         };
-        let kind = params.bound.cheap_kind();
+        let rates = Rates {
+            kind: params.bound.cheap_kind(),
+            one_sided: params.one_sided,
+        };
         let mut best = b.motion().interval().end() - t;
         let mut witness: Option<Witness<T>> = None;
         let mut normal = None;
@@ -323,7 +382,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                     let gap = slab_gap(&ta, &tb, n.get());
                     if gap > T::ZERO {
                         self.stats.bounds += 2;
-                        let mu = (pa.leaf_speed(la, n, kind), pb.leaf_speed(lb, n, kind));
+                        let mu = rates.leaves(&pa, &pb, (la, lb), n);
                         let (step, _) = gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu);
                         if step >= best {
                             self.stats.pruned += 1;
@@ -351,7 +410,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 };
                 let nv = n.get();
                 self.stats.bounds += 2;
-                let mu = (pa.leaf_speed(la, n, kind), pb.leaf_speed(lb, n, kind));
+                let mu = rates.leaves(&pa, &pb, (la, lb), n);
                 let gap = slab_gap(&ta, &tb, nv);
                 let (step, _) = gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu);
                 if step < best {
@@ -369,7 +428,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 [(i, nb.left), (i, nb.right)]
             };
             for (ci, cj) in children {
-                let (step, far) = self.node_step(&pa, &pb, ci, cj, kind);
+                let (step, far) = self.node_step(&pa, &pb, ci, cj, rates);
                 if step < best {
                     self.heap.push(Pending::new(step, ci, cj, far));
                 } else {

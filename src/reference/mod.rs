@@ -228,6 +228,22 @@ impl<R: Real> SpeedProfile<R> {
         best
     }
 
+    /// `sup_{t in [ta, tb]} s(t)` (signed: the one-sided bound's target),
+    /// exactly (up to the precision of `R`).
+    pub fn sup_signed(&self, ta: R, tb: R) -> R {
+        let mut best = self.speed_at(ta).max(self.speed_at(tb));
+        let zero = R::from_f64(0.0);
+        if self.omega > zero && (self.p.abs() > zero || self.q.abs() > zero) {
+            let b = self.p.mul(self.p).add(self.q.mul(self.q)).sqrt();
+            let phi = self.q.atan2(self.p);
+            let (tha, thb) = (self.omega.mul(ta), self.omega.mul(tb));
+            if arc_contains(tha, thb, phi) {
+                best = best.max(self.a.add(b));
+            }
+        }
+        best
+    }
+
     /// `integral_{ta}^{tb} |s(t)| dt`, exactly (up to the precision of `R`).
     pub fn integral_abs(&self, ta: R, tb: R) -> R {
         let zero = R::from_f64(0.0);
@@ -337,6 +353,23 @@ pub struct Exact<R> {
     pub sup_speed: R,
     /// `max_i integral |p_i'(t) . n| dt` over the motion's interval (the seed's `mu`).
     pub displacement: R,
+}
+
+/// The exact largest *signed* directed speed `max_i sup_t p_i'(t) . n/|n|`
+/// of `vertices` under `motion` over its interval, evaluated in `R`: what a
+/// one-sided bound ([`DirectedProbe::rate`](crate::DirectedProbe::rate))
+/// must dominate. `-inf` for no vertex.
+pub fn exact_sup_signed<T: Float, R: Real>(
+    vertices: &[[T; 3]],
+    motion: &RigidMotion<T>,
+    n: Direction<T>,
+) -> R {
+    let f: Frame<R> = Frame::new(motion, n);
+    let mut sup = R::from_f64(f64::NEG_INFINITY);
+    for r in vertices {
+        sup = sup.max(f.profile(*r).sup_signed(f.ta, f.tb));
+    }
+    sup
 }
 
 /// The exact directed speed and displacement of `vertices` under `motion`
