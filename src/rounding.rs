@@ -179,6 +179,41 @@ pub(crate) fn box_support_up<T: Float>(supp: T, half_l1: T, angle: T) -> T {
         + gamma::<T>(8) * half_l1
 }
 
+/// Section "Oriented box": `box_support_up` with its angle-dependent part
+/// computed once per placement. With `k = (u (8 |a| + 96)(1 + gamma_8) + gamma_8)(1 + gamma_12)`
+/// and `k0 = 32 eta`, `supp^ (1 + gamma_7) + w k + k0` is at least
+/// `box_support_up(supp^, w, a)` evaluated exactly (the extra factors cover
+/// the evaluation of `k` and of the three-term sum), so the same bound holds.
+#[cfg(feature = "alloc")]
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct BoxError<T> {
+    k: T,
+    k0: T,
+}
+
+#[cfg(feature = "alloc")]
+impl<T: Float> BoxError<T> {
+    /// The coefficients for a rotation by the angle `angle`.
+    #[inline]
+    pub(crate) fn new(angle: T) -> Self {
+        let u = T::UNIT_ROUNDOFF;
+        let k = (u * (T::from_u32(8) * angle.abs() + T::from_u32(96)) * (T::ONE + gamma::<T>(8))
+            + gamma::<T>(8))
+            * (T::ONE + gamma::<T>(12));
+        Self {
+            k: if k.is_nan() { T::INFINITY } else { k },
+            k0: T::from_u32(32) * T::ETA,
+        }
+    }
+
+    /// An upper bound of the exact support from the computed `supp^` and the
+    /// weight `w` (as [`box_support_up`]).
+    #[inline]
+    pub(crate) fn support_up(&self, supp: T, weight: T) -> T {
+        supp * (T::ONE + gamma::<T>(7)) + weight * self.k + self.k0
+    }
+}
+
 /// Section "Gap": a lower bound of the exact slab gap along the exact unit
 /// direction `n/|n|`, from a computed gap `g^ = min_B fl(q.n) - max_A fl(p.n)`
 /// over placed points within `reach` of the origin, each placed with error at

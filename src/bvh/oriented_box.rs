@@ -1,7 +1,7 @@
 //! Certified oriented boxes: the tight bounding volume of a node's gap.
 
 use super::eigen::principal_axes;
-use crate::rounding::{box_support_up, gamma, radius_up};
+use crate::rounding::{box_support_up, gamma, radius_up, BoxError};
 use crate::{Float, Vec3};
 
 /// An oriented box in the body frame, in generator form:
@@ -119,11 +119,23 @@ impl<T: Float> OrientedBox<T> {
     /// `sum_k h_k |u_k . R^T n| + rho`.
     #[inline]
     pub(crate) fn support_up(&self, m: Vec3<T>, angle: T) -> T {
-        let s = self.half[0] * Vec3::from_array(self.axes[0]).dot(m).abs()
+        box_support_up(self.support_raw(m), self.error_weight, angle)
+    }
+
+    /// As [`support_up`](Self::support_up) with the angle's coefficients
+    /// computed once ([`BoxError`]).
+    #[inline]
+    pub(crate) fn support_up_with(&self, m: Vec3<T>, err: &BoxError<T>) -> T {
+        err.support_up(self.support_raw(m), self.error_weight)
+    }
+
+    /// `fl(sum_k h_k |fl(u_k . m)| + rho)`.
+    #[inline]
+    fn support_raw(&self, m: Vec3<T>) -> T {
+        self.half[0] * Vec3::from_array(self.axes[0]).dot(m).abs()
             + self.half[1] * Vec3::from_array(self.axes[1]).dot(m).abs()
             + self.half[2] * Vec3::from_array(self.axes[2]).dot(m).abs()
-            + self.rho;
-        box_support_up(s, self.error_weight, angle)
+            + self.rho
     }
 
     /// An upper bound of `|c| + sum_k h_k |u_k| + rho`: how far from the

@@ -1,15 +1,17 @@
 //! Conservative advancement of two triangle meshes through their ball trees.
 
 use alloc::collections::BinaryHeap;
+use alloc::vec::Vec;
 
 use crate::bvh::{BallTree, Leaf};
 use crate::ca::driver::{gap_step, placement_error};
 use crate::ca::{CaParams, CaStep, StepResult, Witness};
 use crate::geometry::closest::triangle_triangle;
+use crate::rounding::{gamma, BoxError};
 use crate::{BoundKind, BoundingBall, Direction, Float, Pose, PreparedMotion, Vec3};
 
 /// The default of [`MeshPair::with_far_ratio`].
-const FAR_RATIO: f64 = 4.0;
+const FAR_RATIO: f64 = 6.0;
 
 /// Work counters of a [`MeshPair`], summed over every step since the last
 /// [`MeshPair::reset_stats`]: what a profile of the query needs.
@@ -51,6 +53,8 @@ pub struct MeshPair<'a, T> {
     a: &'a BallTree<T>,
     b: &'a BallTree<T>,
     heap: BinaryHeap<Pending>,
+    /// The nodes placed at the current step, indexed from [`Pending`].
+    placed: Vec<PlacedNode<T>>,
     stats: TraversalStats,
     accept: T,
     far_ratio: T,
@@ -65,6 +69,7 @@ impl<'a, T: Float> MeshPair<'a, T> {
             a,
             b,
             heap: BinaryHeap::with_capacity(256),
+            placed: Vec::with_capacity(512),
             stats: TraversalStats::default(),
             accept: T::ONE,
             far_ratio: T::from_f64(FAR_RATIO),
@@ -89,7 +94,7 @@ impl<'a, T: Float> MeshPair<'a, T> {
 
     /// Takes a node pair's own step, without splitting it, when the gap
     /// between its volumes is at least `ratio` times the sum of its balls'
-    /// radii (default 4): below such a pair the gap grows by at most
+    /// radii (default 6): below such a pair the gap grows by at most
     /// `2 / ratio` of itself, so splitting it buys little step and costs a
     /// descent. `+inf` (or NaN, or a negative ratio) always splits.
     #[must_use]
@@ -123,11 +128,43 @@ struct Placed<'p, T> {
     motion: &'p PreparedMotion<T>,
     err: T,
     reach: T,
-    /// The rotation angle `|w| t` of the pose.
-    angle: T,
+    /// The rotation's error coefficients for box supports (`|w| t`).
+    box_err: BoxError<T>,
+    /// `|v|_1` and `|w|_1` (the crude speed bound's ingredients).
+    v_l1: T,
+    w_l1: T,
+}
+
+/// A node placed at the current step: its centre, and its box's thinnest
+/// axis in the world frame (normalised), computed once per node per pair
+/// creation and shared by the pair's children.
+#[derive(Clone, Copy, Debug)]
+struct PlacedNode<T> {
+    centre: Vec3<T>,
+    thin: Option<Direction<T>>,
 }
 
 impl<T: Float> Placed<'_, T> {
+    fn place(&self, tree: &BallTree<T>, node: u32) -> PlacedNode<T> {
+        let n = &tree.nodes[node as usize];
+        let thin = self.pose.transform_vector(Vec3::from_array(n.obb.axes[2]));
+        PlacedNode {
+            centre: self.centre(tree, node),
+            thin: Direction::try_new_fast(thin).ok(),
+        }
+    }
+
+    /// A crude, direction-free bound on the speed of every point within
+    /// `radius` of the rotation centre: `|v| + |w| radius <= |v|_1 + |w|_1 radius`,
+    /// rounded up (at most five roundings, covered by `1 + gamma_8`). It
+    /// bounds the one-sided and the absolute speeds along any unit direction,
+    /// so a step from it is safe (Lemma 9.1) and lets a pair be pruned before
+    /// its directed bounds are computed.
+    #[inline]
+    fn crude_speed(&self, radius: T) -> T {
+        (self.v_l1 + self.w_l1 * radius) * (T::ONE + gamma::<T>(8))
+    }
+
     fn centre(&self, tree: &BallTree<T>, node: u32) -> Vec3<T> {
         self.pose
             .transform_point(Vec3::from_array(*tree.nodes[node as usize].ball.centre()))
@@ -216,22 +253,23 @@ impl<T: Float> MeshPair<'_, T> {
         &mut self,
         pa: &Placed<'_, T>,
         pb: &Placed<'_, T>,
-        i: u32,
-        j: u32,
+        (i, j): (u32, u32),
+        (qa, qb): (PlacedNode<T>, PlacedNode<T>),
         rates: Rates,
+        best_step: T,
     ) -> (T, bool) {
         let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
-        let d = pb.centre(self.b, j) - pa.centre(self.a, i);
+        let d = qb.centre - qa.centre;
         // The gap of the boxes along `n` (any sign of `n`: the slab between
         // them is measured along whichever way separates).
         let box_gap = |n: Vec3<T>| {
             let along = d.dot(n).abs();
             let sa = na
                 .obb
-                .support_up(pa.pose.inverse_transform_vector(n), pa.angle);
+                .support_up_with(pa.pose.inverse_transform_vector(n), &pa.box_err);
             let sb = nb
                 .obb
-                .support_up(pb.pose.inverse_transform_vector(n), pb.angle);
+                .support_up_with(pb.pose.inverse_transform_vector(n), &pb.box_err);
             along - sa - sb
         };
         let mut best: Option<(T, Direction<T>)> = None;
@@ -244,11 +282,8 @@ impl<T: Float> MeshPair<'_, T> {
             let ball_gap = d.dot(n.get()) - na.ball.radius() - nb.ball.radius();
             consider(n, ball_gap.max_nan(box_gap(n.get())));
         }
-        for (p, node) in [(pa, na), (pb, nb)] {
-            let thin = p.pose.transform_vector(Vec3::from_array(node.obb.axes[2]));
-            if let Ok(n) = Direction::try_new_fast(thin) {
-                consider(n, box_gap(n.get()));
-            }
+        for n in [qa.thin, qb.thin].into_iter().flatten() {
+            consider(n, box_gap(n.get()));
         }
         let Some((gap, n)) = best else {
             self.stats.overlapping += 1;
@@ -256,9 +291,19 @@ impl<T: Float> MeshPair<'_, T> {
         };
         // Orient n from A to B: the slab gap is measured along it.
         let n = if d.dot(n.get()) < T::ZERO { -n } else { n };
+        let far = gap >= self.far_ratio * (na.ball.radius() + nb.ball.radius());
+        // A pair whose step under the crude bound already reaches the best
+        // step cannot limit it: no directed bound needed.
+        let crude = (
+            pa.crude_speed(na.ball.outer_radius_up()),
+            pb.crude_speed(nb.ball.outer_radius_up()),
+        );
+        let (lower, _) = gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), crude);
+        if lower >= best_step {
+            return (lower, far);
+        }
         self.stats.bounds += 2;
         let mu = rates.balls(pa, pb, (&na.ball, &nb.ball), n);
-        let far = gap >= self.far_ratio * (na.ball.radius() + nb.ball.radius());
         (
             gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu).0,
             far,
@@ -282,15 +327,18 @@ struct Pending {
     j: u32,
     /// The pair is far apart for its size: its step is taken as it is.
     far: bool,
+    /// Where the two nodes' placements are in `MeshPair::placed`.
+    at: (u32, u32),
 }
 
 impl Pending {
-    fn new<T: Float>(step: T, i: u32, j: u32, far: bool) -> Self {
+    fn new<T: Float>(step: T, (i, j): (u32, u32), far: bool, at: (u32, u32)) -> Self {
         Self {
             key: OrdF64(step.to_f64()),
             i,
             j,
             far,
+            at,
         }
     }
 }
@@ -335,7 +383,9 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             motion: a,
             err,
             reach,
-            angle: a.motion().angle_at(t),
+            box_err: BoxError::new(a.motion().angle_at(t)),
+            v_l1: a.motion().linear().norm_l1(),
+            w_l1: a.motion().angular().norm_l1(),
         };
         let (pose, err, reach) = place(self.b, b);
         let pb = Placed {
@@ -343,7 +393,9 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             motion: b,
             err,
             reach,
-            angle: b.motion().angle_at(t),
+            box_err: BoxError::new(b.motion().angle_at(t)),
+            v_l1: b.motion().linear().norm_l1(),
+            w_l1: b.motion().angular().norm_l1(),
         };
         let rates = Rates {
             kind: params.bound.cheap_kind(),
@@ -354,8 +406,11 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         let mut normal = None;
         self.heap.clear();
         self.closest = None;
-        self.heap.push(Pending::new(T::ZERO, 0, 0, false));
-        while let Some(Pending { key, i, j, far }) = self.heap.pop() {
+        self.placed.clear();
+        self.placed.push(pa.place(self.a, 0));
+        self.placed.push(pb.place(self.b, 0));
+        self.heap.push(Pending::new(T::ZERO, (0, 0), false, (0, 1)));
+        while let Some(Pending { key, i, j, far, at }) = self.heap.pop() {
             let key = T::from_f64(key.0);
             if key >= best * self.accept {
                 // Best-first: every pair left has a step at least `key`, so
@@ -378,7 +433,8 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 let (ta, tb) = (pa.corners(la), pb.corners(lb));
                 // Cheap first: the corners' slab along the line joining the
                 // ball centres (Lemma 9.1 holds for any direction).
-                if let Ok(n) = Direction::try_new(pb.centre(self.b, j) - pa.centre(self.a, i)) {
+                let (qa, qb) = (self.placed[at.0 as usize], self.placed[at.1 as usize]);
+                if let Ok(n) = Direction::try_new(qb.centre - qa.centre) {
                     let gap = slab_gap(&ta, &tb, n.get());
                     if gap > T::ZERO {
                         self.stats.bounds += 2;
@@ -422,15 +478,25 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             // Descend into the larger ball (a leaf is never split).
             let split_a = nb.leaf().is_some()
                 || (na.leaf().is_none() && na.ball.radius() >= nb.ball.radius());
-            let children = if split_a {
-                [(na.left, j), (na.right, j)]
+            let (left, right) = if split_a {
+                (na.left, na.right)
             } else {
-                [(i, nb.left), (i, nb.right)]
+                (nb.left, nb.right)
             };
-            for (ci, cj) in children {
-                let (step, far) = self.node_step(&pa, &pb, ci, cj, rates);
+            for child in [left, right] {
+                // Place the new node once; the kept one is already placed.
+                let slot = self.placed.len() as u32;
+                let (pair, at) = if split_a {
+                    self.placed.push(pa.place(self.a, child));
+                    ((child, j), (slot, at.1))
+                } else {
+                    self.placed.push(pb.place(self.b, child));
+                    ((i, child), (at.0, slot))
+                };
+                let q = (self.placed[at.0 as usize], self.placed[at.1 as usize]);
+                let (step, far) = self.node_step(&pa, &pb, pair, q, rates, best);
                 if step < best {
-                    self.heap.push(Pending::new(step, ci, cj, far));
+                    self.heap.push(Pending::new(step, pair, far, at));
                 } else {
                     self.stats.pruned += 1;
                 }
