@@ -13,7 +13,10 @@
 //! * `toi_<size>/nevq` and `toi_<size>/evq`: each criterion iteration runs
 //!   the next query of the list (cycling), making the `MeshPair` and running
 //!   `time_of_impact`, so criterion's mean is the mean time per query over
-//!   the list.
+//!   the list. `toi_<size>/evq_seed_steps`: EVQ stepping as the seed does
+//!   (absolute speeds over the rest of the interval: `one_sided` off,
+//!   horizon factor 0), for the ratio that one-sided bounds and the
+//!   time-resolved step buy.
 //! * `toi_<size>/parry_nonlinear`: parry3d-f64's `cast_shapes_nonlinear` on
 //!   the same meshes (as parry `TriMesh`es) and motions, cycling over the
 //!   first [`PARRY_QUERIES`] queries, one query per sample (flat sampling,
@@ -84,15 +87,22 @@ fn bench_size(c: &mut Criterion, size: TorusKnotSize, parry_per_triangle: &mut O
         .sample_size(20)
         .warm_up_time(Duration::from_millis(500))
         .measurement_time(measurement_time(size));
-    for (id, bound) in [("nevq", BoundChoice::Nevq), ("evq", BoundChoice::Evq)] {
-        let params = KnotScene::params(bound);
-        for (id, list) in [
+    let seed_steps = KnotScene::params(BoundChoice::Evq)
+        .with_one_sided(false)
+        .with_horizon_factor(0.0);
+    for (id, params, first) in [
+        ("nevq", KnotScene::params(BoundChoice::Nevq), true),
+        ("evq", KnotScene::params(BoundChoice::Evq), true),
+        ("evq_seed_steps", seed_steps, false),
+    ] {
+        let lists = [
             (id.to_owned(), &scene.queries[..]),
             (
                 format!("{id}_first{PARRY_QUERIES}"),
                 &scene.queries[..PARRY_QUERIES],
             ),
-        ] {
+        ];
+        for (id, list) in lists.into_iter().take(if first { 2 } else { 1 }) {
             group.bench_function(BenchmarkId::from_parameter(id), |b| {
                 let mut k = 0;
                 b.iter(|| {
