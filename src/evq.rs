@@ -103,6 +103,28 @@ pub(crate) fn full_turn_scan<T: Float>(
     Some(best)
 }
 
+/// The rotation-plane coordinates `q = (x, y) = (r . e1, r . e2)` of `r` and
+/// the sides `g = u x q` of the arc's end directions `ua`, `ub`.
+#[inline(always)]
+fn plane_sides<T: Float>(
+    r: &[T; 3],
+    e1: Vec3<T>,
+    e2: Vec3<T>,
+    ua: (T, T),
+    ub: (T, T),
+) -> (T, T, T, T) {
+    let r = Vec3::from_array(*r);
+    let x = r.dot(e1);
+    let y = r.dot(e2);
+    (x, y, ua.0 * y - ua.1 * x, ub.0 * y - ub.1 * x)
+}
+
+/// The end values `f = u . q` of the arc for `q = (x, y)`.
+#[inline(always)]
+fn end_values<T: Float>(x: T, y: T, ua: (T, T), ub: (T, T)) -> (T, T) {
+    (ua.0 * x + ua.1 * y, ub.0 * x + ub.1 * y)
+}
+
 /// Sweep below pi: the per-vertex case split in plane coordinates.
 /// `u = (cos theta, -sin theta)` are the unit directions of `c(t_a)`, `c(t_b)`
 /// in the basis `(e1, e2)`; `f = u . q` and `g = u x q` for `q = (x, y)`.
@@ -117,19 +139,14 @@ pub(crate) fn arc_scan<T: Float>(
 ) -> Option<T> {
     let mut best = T::ZERO;
     for r in vertices {
-        let r = Vec3::from_array(*r);
-        let x = r.dot(e1);
-        let y = r.dot(e2);
-        let ga = ua.0 * y - ua.1 * x;
-        let gb = ub.0 * y - ub.1 * x;
+        let (x, y, ga, gb) = plane_sides(r, e1, e2, ua, ub);
         let v2 = if ga * gb <= T::ZERO {
             // c(t_a), c(t_b) on opposite sides of the line through q (or on it):
             // the arc meets +-q, where |c(t) . q| = |c| |q|.
             x * x + y * y
         } else {
             // Same side: |u . q| has no interior maximum on the arc.
-            let fa = ua.0 * x + ua.1 * y;
-            let fb = ub.0 * x + ub.1 * y;
+            let (fa, fb) = end_values(x, y, ua, ub);
             (fa * fa).max_nan(fb * fb)
         };
         if v2 > best {
@@ -166,13 +183,8 @@ pub(crate) fn arc_signed_scan<T: Float>(
     let mut reach_sq = -T::INFINITY;
     let mut best_f = -T::INFINITY;
     for r in vertices {
-        let r = Vec3::from_array(*r);
-        let x = r.dot(e1);
-        let y = r.dot(e2);
-        let ga = ua.0 * y - ua.1 * x;
-        let gb = ub.0 * y - ub.1 * x;
-        let fa = ua.0 * x + ua.1 * y;
-        let fb = ub.0 * x + ub.1 * y;
+        let (x, y, ga, gb) = plane_sides(r, e1, e2, ua, ub);
+        let (fa, fb) = end_values(x, y, ua, ub);
         if ga * gb <= T::ZERO && c_norm * (fa + fb) >= -slack {
             reach_sq = reach_sq.max_nan(x * x + y * y);
         } else {

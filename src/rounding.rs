@@ -170,7 +170,7 @@ pub(crate) fn pose_error_up<T: Float>(angle: T, radius: T, centre_reach: T) -> T
 /// of a body-frame box of half extents `h` placed by the computed rotation,
 /// from the computed `supp^ = fl(sum_k h_k |fl(R^T n)_k|)`:
 /// `supp^ (1 + gamma_4) + pose_error_up(angle, |h|_1, 0) + gamma_8 |h|_1`.
-#[cfg(feature = "alloc")]
+#[cfg(test)]
 #[inline]
 #[must_use]
 pub(crate) fn box_support_up<T: Float>(supp: T, half_l1: T, angle: T) -> T {
@@ -271,6 +271,28 @@ pub(crate) fn advance_down<T: Float>(t: T, step: T) -> T {
 #[cfg(test)]
 mod tests {
     use super::gamma;
+
+    #[test]
+    fn box_error_dominates_box_support_up() {
+        // `BoxError` is `box_support_up` with the angle's part hoisted: never
+        // below it (the exact claim of `proofs/floating-point.md`,
+        // "Oriented box"), for small and large angles, weights and supports.
+        for &a in &[0.0, 1e-9, 0.5, 3.0, 1e3, 1e12] {
+            let e = super::BoxError::<f64>::new(a);
+            for &w in &[0.0, 1e-300, 1e-8, 0.7, 1e6] {
+                for &s in &[0.0, 1e-12, 1.0, 3e5] {
+                    let (new, old) = (e.support_up(s, w), super::box_support_up(s, w, a));
+                    assert!(new >= old, "a {a} w {w} s {s}: {new} < {old}");
+                }
+            }
+            let e = super::BoxError::<f32>::new(a as f32);
+            let (new, old) = (
+                e.support_up(1.0, 0.5),
+                super::box_support_up(1.0f32, 0.5, a as f32),
+            );
+            assert!(new >= old, "f32 a {a}: {new} < {old}");
+        }
+    }
 
     #[test]
     fn gamma_bound_dominates_the_exact_constant() {

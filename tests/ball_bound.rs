@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{case_spec, cases, Oracle};
+use common::{c_over_n, case_spec, cases, Oracle};
 use motion_bound::reference::dd::DoubleDouble;
 use motion_bound::reference::{exact, Real};
 use motion_bound::testkit::CaseSpec;
@@ -17,25 +17,7 @@ use proptest::test_runner::TestCaseError;
 fn exact_ball_sup<T: Float>(case: &motion_bound::testkit::Case<T>, s: [T; 3], rho: T) -> f64 {
     type R = DoubleDouble;
     let centre: motion_bound::reference::Exact<R> = exact(&[s], &case.motion, case.n);
-    let r = |x: T| R::from_f64(x.to_f64());
-    let (n, w) = (case.n.get(), case.motion.angular());
-    let c = [
-        r(n.y).mul(r(w.z)).sub(r(n.z).mul(r(w.y))),
-        r(n.z).mul(r(w.x)).sub(r(n.x).mul(r(w.z))),
-        r(n.x).mul(r(w.y)).sub(r(n.y).mul(r(w.x))),
-    ];
-    // The bound is along the exact unit n/|n|: divide by |n|.
-    let n_len = r(n.x)
-        .mul(r(n.x))
-        .add(r(n.y).mul(r(n.y)))
-        .add(r(n.z).mul(r(n.z)))
-        .sqrt();
-    let c_len = c[0]
-        .mul(c[0])
-        .add(c[1].mul(c[1]))
-        .add(c[2].mul(c[2]))
-        .sqrt();
-    let rim = c_len.mul(r(rho)).div(n_len);
+    let rim = c_over_n::<T, R>(case.n, &case.motion).mul(R::from_f64(rho.to_f64()));
     // `exact` already works along n/|n| for the centre's term.
     centre.sup_speed.add(rim).to_f64()
 }

@@ -5,7 +5,7 @@
 
 mod common;
 
-use common::{case_spec, cases};
+use common::{c_over_n, case_spec, cases};
 use motion_bound::reference::dd::DoubleDouble;
 use motion_bound::reference::{exact_sup_signed, Real};
 use motion_bound::testkit::CaseSpec;
@@ -14,27 +14,6 @@ use motion_bound::{
 };
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
-
-/// `|n x w| / |n|` in `R`: the rim term's factor along the exact unit `n/|n|`.
-fn c_over_n<T: Float, R: Real>(n: Direction<T>, motion: &RigidMotion<T>) -> R {
-    let r = |x: T| R::from_f64(x.to_f64());
-    let (n, w) = (n.get(), motion.angular());
-    let c = [
-        r(n.y).mul(r(w.z)).sub(r(n.z).mul(r(w.y))),
-        r(n.z).mul(r(w.x)).sub(r(n.x).mul(r(w.z))),
-        r(n.x).mul(r(w.y)).sub(r(n.y).mul(r(w.x))),
-    ];
-    let n_len = r(n.x)
-        .mul(r(n.x))
-        .add(r(n.y).mul(r(n.y)))
-        .add(r(n.z).mul(r(n.z)))
-        .sqrt();
-    c[0].mul(c[0])
-        .add(c[1].mul(c[1]))
-        .add(c[2].mul(c[2]))
-        .sqrt()
-        .div(n_len)
-}
 
 /// The absolute bound plus the difference of the two bounds' rounding
 /// margins, `64 u (sum_k |v_k n_k| + (|n x w| + |w|_1) R) + 64 eta`: the one-sided

@@ -1,7 +1,7 @@
 //! Certified oriented boxes: the tight bounding volume of a node's gap.
 
 use super::eigen::principal_axes;
-use crate::rounding::{box_support_up, gamma, radius_up, BoxError};
+use crate::rounding::{gamma, radius_up, BoxError};
 use crate::{Float, Vec3};
 
 /// An oriented box in the body frame, in generator form:
@@ -115,15 +115,10 @@ impl<T: Float> OrientedBox<T> {
 
     /// An upper bound of the box's support about its centre along the exact
     /// rotation of the direction whose computed body-frame image is `m`
-    /// (`m = fl(R^T n)`, `R` the computed rotation by the angle `angle`):
-    /// `sum_k h_k |u_k . R^T n| + rho`.
-    #[inline]
-    pub(crate) fn support_up(&self, m: Vec3<T>, angle: T) -> T {
-        box_support_up(self.support_raw(m), self.error_weight, angle)
-    }
-
-    /// As [`support_up`](Self::support_up) with the angle's coefficients
-    /// computed once ([`BoxError`]).
+    /// (`m = fl(R^T n)`, `R` the computed rotation by the angle `a`):
+    /// `sum_k h_k |u_k . R^T n| + rho |n|`.
+    /// The rotation's angle enters through `err` (`BoxError::new(angle)`,
+    /// computed once per placement).
     #[inline]
     pub(crate) fn support_up_with(&self, m: Vec3<T>, err: &BoxError<T>) -> T {
         err.support_up(self.support_raw(m), self.error_weight)
@@ -179,7 +174,7 @@ mod tests {
             let a = f64::from(k) * 0.37;
             let m = Vec3::new(a.cos() * a.sin(), (2.0 * a).sin(), a.cos());
             let m = m * (1.0 / m.length());
-            let s = b.support_up(m, 0.0);
+            let s = b.support_up_with(m, &crate::rounding::BoxError::new(0.0));
             let c = Vec3::from_array(b.centre).dot(m);
             for p in &pts {
                 let proj = Vec3::from_array(*p).dot(m) - c;

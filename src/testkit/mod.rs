@@ -290,7 +290,12 @@ pub fn oriented_box_supports<T: Float>(
     let b = crate::bvh::OrientedBox::fit(points.iter());
     let s = directions
         .iter()
-        .map(|&m| b.support_up(Vec3::from_array(m), T::ZERO))
+        .map(|&m| {
+            b.support_up_with(
+                Vec3::from_array(m),
+                &crate::rounding::BoxError::new(T::ZERO),
+            )
+        })
         .collect();
     (b.centre, s)
 }

@@ -222,3 +222,29 @@ pub fn check_sound<T: Oracle>(
     );
     Ok(())
 }
+
+/// `|n x w| / |n|` in `R` from the float inputs, exactly up to `R`'s
+/// precision: the rim term's factor of a ball's bound along the exact unit
+/// `n/|n|` (`proofs/08-ball-bound.md`, `proofs/10-one-sided.md`).
+pub fn c_over_n<T: Float, R: Real>(
+    n: motion_bound::Direction<T>,
+    motion: &motion_bound::RigidMotion<T>,
+) -> R {
+    let r = |x: T| R::from_f64(x.to_f64());
+    let (n, w) = (n.get(), motion.angular());
+    let c = [
+        r(n.y).mul(r(w.z)).sub(r(n.z).mul(r(w.y))),
+        r(n.z).mul(r(w.x)).sub(r(n.x).mul(r(w.z))),
+        r(n.x).mul(r(w.y)).sub(r(n.y).mul(r(w.x))),
+    ];
+    let n_len = r(n.x)
+        .mul(r(n.x))
+        .add(r(n.y).mul(r(n.y)))
+        .add(r(n.z).mul(r(n.z)))
+        .sqrt();
+    c[0].mul(c[0])
+        .add(c[1].mul(c[1]))
+        .add(c[2].mul(c[2]))
+        .sqrt()
+        .div(n_len)
+}
