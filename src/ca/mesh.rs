@@ -40,9 +40,11 @@ pub struct TraversalStats {
 /// For a node pair placed at time `t`, the gap `g` between the nodes'
 /// oriented boxes (or balls) is measured along three directions, the line
 /// joining their centres and each box's thinnest axis, and the largest is
-/// kept with its direction `n`; every point below the pair moves along `n`
-/// at most at the balls' directed bounds `mu_a + mu_b` (EVQ of a ball is
-/// `O(1)`), so the pair cannot touch before `g / (mu_a + mu_b)`. A pair far
+/// kept with its direction `n`; the slab between the nodes closes at most at
+/// `mu_a + mu_b`, the balls' directed bounds (`O(1)` each; by default the
+/// one-sided rates of A along `n` and of B along `-n`,
+/// [`DirectedProbe::ball_rate`](crate::DirectedProbe::ball_rate)), so the
+/// pair cannot touch before `g / (mu_a + mu_b)`. A pair far
 /// apart for its size is settled with that step ([`MeshPair::with_far_ratio`]). A pair whose
 /// step is at least the best step found so far is pruned; triangle pairs get
 /// their exact distance, their own closest direction and the bounds of their
