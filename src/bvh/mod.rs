@@ -7,6 +7,8 @@ use alloc::vec::Vec;
 mod eigen;
 mod oriented_box;
 
+use eigen::principal_axes;
+
 pub(crate) use oriented_box::OrientedBox;
 
 use crate::rounding::offset_radius_up;
@@ -61,8 +63,11 @@ pub(crate) struct Leaf<T> {
 /// directed bound is computed from, in `O(1)`:
 /// [`DirectedProbe::ball_speed`](crate::DirectedProbe::ball_speed)).
 ///
-/// Built top-down: split at the median of the triangle centroids along the
-/// widest axis, one triangle per leaf; `2 N - 1` nodes for `N` triangles.
+/// Built top-down, one triangle per leaf (`2 N - 1` nodes for `N`
+/// triangles): each node is split at the median of whichever of three keys
+/// (centroids along the widest axis or along the box's longest axis,
+/// normals along their principal axis) gives the children the smallest total
+/// box surface. `O(N log^2 N)`: about 0.5 s for 34K triangles here.
 #[derive(Clone, Debug)]
 pub struct BallTree<T> {
     pub(crate) nodes: Vec<Node<T>>,
@@ -144,17 +149,23 @@ impl<T: Float> BallTree<T> {
             left: 0,
             right: 0,
         });
-        // Split at the median centroid along the widest axis of the centroids.
+        // Split at the median of one of three keys: the centroid along the
+        // widest axis of the centroids, the centroid along the box's longest
+        // axis, and the triangle normal along the normals' principal axis (a
+        // tube is cut lengthwise into flatter halves). The split whose
+        // children's boxes have the least total surface (`h0 h1 + h1 h2 +
+        // h0 h2`) wins: tighter boxes overlap less near contact. Only the
+        // tree's shape depends on this choice; every box is certified anyway.
         let centroid = |l: u32| {
             let c = &leaves[l as usize].corners;
-            [0, 1, 2].map(|k| c[0][k] + c[1][k] + c[2][k])
+            [0, 1, 2].map(|k| c[0][k].to_f64() + c[1][k].to_f64() + c[2][k].to_f64())
         };
-        let (mut lo, mut hi) = ([T::INFINITY; 3], [-T::INFINITY; 3]);
+        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
         for &l in order.iter() {
             let c = centroid(l);
             for k in 0..3 {
-                lo[k] = lo[k].min_nan(c[k]);
-                hi[k] = hi[k].max_nan(c[k]);
+                lo[k] = lo[k].min(c[k]);
+                hi[k] = hi[k].max(c[k]);
             }
         }
         let ext = [0, 1, 2].map(|k| hi[k] - lo[k]);
@@ -165,12 +176,39 @@ impl<T: Float> BallTree<T> {
         } else {
             2
         };
-        let mid = order.len() / 2;
-        order.select_nth_unstable_by(mid, |&x, &y| {
-            centroid(x)[axis]
-                .partial_cmp(&centroid(y)[axis])
+        let long = obb.axes[0].map(T::to_f64);
+        let normals_axis = principal_axes(normal_scatter(leaves, order))[0];
+        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let keys: [&dyn Fn(u32) -> f64; 3] =
+            [&|l| centroid(l)[axis], &|l| dot(centroid(l), long), &|l| {
+                dot(unit_normal(&leaves[l as usize].corners), normals_axis)
+            }];
+        let by = |key: &dyn Fn(u32) -> f64, x: &u32, y: &u32| {
+            key(*x)
+                .partial_cmp(&key(*y))
                 .unwrap_or(core::cmp::Ordering::Equal)
-        });
+        };
+        let mid = order.len() / 2;
+        let mut best = (f64::INFINITY, 0);
+        if order.len() >= 4 {
+            let mut trial = order.to_vec();
+            for (k, key) in keys.iter().enumerate() {
+                trial.select_nth_unstable_by(mid, |x, y| by(*key, x, y));
+                let (l, r) = trial.split_at(mid);
+                let area = |set: &[u32]| {
+                    let b = OrientedBox::fit(
+                        set.iter().flat_map(|&t| leaves[t as usize].corners.iter()),
+                    );
+                    let h = b.half.map(T::to_f64);
+                    h[0] * h[1] + h[1] * h[2] + h[0] * h[2]
+                };
+                let cost = area(l) + area(r);
+                if cost < best.0 {
+                    best = (cost, k);
+                }
+            }
+        }
+        order.select_nth_unstable_by(mid, |x, y| by(keys[best.1], x, y));
         let (left, right) = order.split_at_mut(mid);
         let left_index = self.nodes.len() as u32;
         let dl = self.build(leaves, left, depth + 1)?;
@@ -226,6 +264,47 @@ impl<T: Float> BallTree<T> {
     pub fn max_radius(&self) -> T {
         self.leaves.iter().fold(T::ZERO, |m, l| m.max_nan(l.r_hat))
     }
+}
+
+/// The unit normal of a triangle (in `f64`; zero for a degenerate one).
+fn unit_normal<T: Float>(c: &[[T; 3]; 3]) -> [f64; 3] {
+    let e1 = [0, 1, 2].map(|k| c[1][k].to_f64() - c[0][k].to_f64());
+    let e2 = [0, 1, 2].map(|k| c[2][k].to_f64() - c[0][k].to_f64());
+    let n = [
+        e1[1] * e2[2] - e1[2] * e2[1],
+        e1[2] * e2[0] - e1[0] * e2[2],
+        e1[0] * e2[1] - e1[1] * e2[0],
+    ];
+    let len = Float::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if len > 0.0 && len.is_finite() {
+        n.map(|x| x / len)
+    } else {
+        [0.0; 3]
+    }
+}
+
+/// The scatter matrix of the unit normals of `order`'s triangles about
+/// their mean: its principal axis is the direction the normals vary along.
+fn normal_scatter<T: Float>(leaves: &[Leaf<T>], order: &[u32]) -> [[f64; 3]; 3] {
+    let mut mean = [0.0f64; 3];
+    for &l in order {
+        let n = unit_normal(&leaves[l as usize].corners);
+        for k in 0..3 {
+            mean[k] += n[k];
+        }
+    }
+    let mean = mean.map(|x| x / order.len().max(1) as f64);
+    let mut s = [[0.0f64; 3]; 3];
+    for &l in order {
+        let n = unit_normal(&leaves[l as usize].corners);
+        let d = [0, 1, 2].map(|k| n[k] - mean[k]);
+        for i in 0..3 {
+            for j in 0..3 {
+                s[i][j] += d[i] * d[j];
+            }
+        }
+    }
+    s
 }
 
 /// The node's oriented box (`OrientedBox::fit`) and a ball centred at the
