@@ -4,7 +4,7 @@
 
 mod common;
 
-use common::{c_over_n, case_spec, cases, Oracle};
+use common::{ball_around_first, c_over_n, case_spec, cases, Oracle};
 use motion_bound::reference::dd::DoubleDouble;
 use motion_bound::reference::{exact, Real};
 use motion_bound::testkit::CaseSpec;
@@ -27,18 +27,10 @@ fn ball_sound<T: Oracle>(spec: &CaseSpec, grow: f64) -> Result<(), TestCaseError
         return Ok(());
     };
     // The ball: centred at the first vertex, holding every vertex, grown a little.
-    let s = case.vertices[0];
-    let mut rho = 0.0f64;
-    for v in &case.vertices {
-        let d: f64 = (0..3)
-            .map(|k| (v[k].to_f64() - s[k].to_f64()).powi(2))
-            .sum();
-        rho = rho.max(d.sqrt());
-    }
-    let rho = T::from_f64(rho * (1.0 + grow) * (1.0 + 1e-6));
-    let Ok(ball) = BoundingBall::try_new(s, rho) else {
+    let Some(ball) = ball_around_first(&case.vertices, grow) else {
         return Ok(());
     };
+    let (s, rho) = (*ball.centre(), ball.radius());
     let probe = PreparedMotion::new(&case.motion).probe(case.n);
     let e = probe.ball_speed(&ball, BoundKind::Evq);
     let n = probe.ball_speed(&ball, BoundKind::Nevq);

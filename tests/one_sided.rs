@@ -5,13 +5,11 @@
 
 mod common;
 
-use common::{c_over_n, case_spec, cases};
+use common::{ball_around_first, c_over_n, case_spec, cases};
 use motion_bound::reference::dd::DoubleDouble;
 use motion_bound::reference::{exact_sup_signed, Real};
 use motion_bound::testkit::CaseSpec;
-use motion_bound::{
-    BoundKind, BoundingBall, Direction, Float, PreparedMotion, RigidMotion, VertexSet,
-};
+use motion_bound::{BoundKind, Direction, Float, PreparedMotion, RigidMotion, VertexSet};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 
@@ -55,18 +53,10 @@ fn signed_sound<T: Float, R: Real>(spec: &CaseSpec, grow: f64) -> Result<(), Tes
         // A ball around the first vertex holding every vertex: its rate
         // dominates the exact signed sup of its centre plus |c| rho (the
         // sup over the ball), hence every vertex's.
-        let s = case.vertices[0];
-        let mut rho = 0.0f64;
-        for v in &case.vertices {
-            let d: f64 = (0..3)
-                .map(|k| (v[k].to_f64() - s[k].to_f64()).powi(2))
-                .sum();
-            rho = rho.max(d.sqrt());
-        }
-        let rho = T::from_f64(rho * (1.0 + grow) * (1.0 + 1e-6));
-        let Ok(ball) = BoundingBall::try_new(s, rho) else {
+        let Some(ball) = ball_around_first(&case.vertices, grow) else {
             continue;
         };
+        let (s, rho) = (*ball.centre(), ball.radius());
         let centre: R = exact_sup_signed(&[s], &case.motion, n);
         let over_ball = centre
             .add(c_over_n::<T, R>(n, &case.motion).mul(R::from_f64(rho.to_f64())))

@@ -248,3 +248,22 @@ pub fn c_over_n<T: Float, R: Real>(
         .sqrt()
         .div(n_len)
 }
+
+/// A ball centred at the first vertex holding every vertex, its radius
+/// grown by `grow` (relative) and a `1e-6` margin over the `f64` distances;
+/// `None` when the ball is out of range.
+pub fn ball_around_first<T: Float>(
+    vertices: &[[T; 3]],
+    grow: f64,
+) -> Option<motion_bound::BoundingBall<T>> {
+    let s = *vertices.first()?;
+    let mut rho = 0.0f64;
+    for v in vertices {
+        let d: f64 = (0..3)
+            .map(|k| (v[k].to_f64() - s[k].to_f64()).powi(2))
+            .sum();
+        rho = rho.max(d.sqrt());
+    }
+    let rho = T::from_f64(rho * (1.0 + grow) * (1.0 + 1e-6));
+    motion_bound::BoundingBall::try_new(s, rho).ok()
+}
