@@ -175,6 +175,36 @@ fn horizon_and_far_ratio_stay_sound() {
 }
 
 #[test]
+fn a_mesh_pair_reused_across_queries_stays_sound() {
+    // One `MeshPair` per tree pair for every query: each query's first step
+    // starts from the leaf pairs the previous query left behind, for other
+    // motions (`proofs/09-ca-toi.md`, Lemma 9.4: any seed is sound).
+    let knot = TorusKnot::TREFOIL.mesh::<f64>(60, 8).expect("knot");
+    let mut rng = Rng::new(21);
+    let (oa, ob) = (oriented(&knot, 2, &mut rng), oriented(&knot, 2, &mut rng));
+    let r = reach(&knot);
+    let params = CaParams::default().with_contact_distance(1e-3 * 2.0 * r);
+    let mut pairs: Vec<MeshPair<'_, f64>> = (0..4)
+        .map(|k| MeshPair::new(&oa[k % 2].1, &ob[k / 2].1))
+        .collect();
+    let mut tally = Tally::default();
+    for k in 0..queries_per_scene(80) {
+        let q = fly_by(&mut rng, r, r, 6.0);
+        let report = time_of_impact(&mut pairs[k % 4], &q.a, &q.b, &params).expect("valid query");
+        let truth = first_sampled_contact(
+            MeshRef::from(&oa[k % 2].0),
+            &q.a,
+            MeshRef::from(&ob[(k % 4) / 2].0),
+            &q.b,
+            (0.0, 1.0),
+            SAMPLES,
+        );
+        tally.record(&format!("reused pair, query {k}"), &report, truth);
+    }
+    tally.assert_clean("knot vs knot, reused pairs");
+}
+
+#[test]
 fn rings_with_rotation_are_never_late_and_never_missed() {
     let ring = torus::<f64>(0.5, 0.08, 32, 8).expect("ring");
     run_meshes("ring vs ring", &ring, &ring, 6.0, queries_per_scene(300), 2);

