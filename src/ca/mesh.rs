@@ -17,15 +17,21 @@ const FAR_RATIO: f64 = 6.0;
 /// [`MeshPair::reset_stats`]: what a profile of the query needs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct TraversalStats {
-    /// Node pairs popped from the traversal stack.
+    /// Node pairs popped from the best-first queue and worked on (split,
+    /// settled, or a leaf pair measured; a seed's leaf pair popped again is
+    /// counted and skipped). The pair at which a descent stops is counted
+    /// in `pruned` instead.
     pub node_pairs: u64,
-    /// Node pairs discarded because their own safe step already exceeded the
-    /// best step found (or the rest of the interval).
+    /// Node pairs discarded because their own safe step already reached the
+    /// best step found (times the accept fraction at the queue's head), with
+    /// the pairs left in the queue when a descent stops.
     pub pruned: u64,
     /// Triangle pairs whose exact distance was computed (the seeds measured
     /// before each descent included).
     pub triangle_pairs: u64,
-    /// Directed bounds evaluated (two per node pair that is separated).
+    /// Directed bounds evaluated, one per body: two per node pair not
+    /// already pruned by the crude speed bound, two per leaf-pair pre-check
+    /// and two per measured triangle pair.
     pub bounds: u64,
     /// Node pairs far apart for their size, whose own step was taken
     /// without splitting them ([`MeshPair::with_far_ratio`]).
@@ -61,7 +67,9 @@ pub struct TraversalStats {
 pub struct MeshPair<'a, T> {
     a: &'a BallTree<T>,
     b: &'a BallTree<T>,
-    heap: BinaryHeap<Pending>,
+    heap: BinaryHeap<Queued>,
+    /// The node pairs behind the queue's entries, indexed from [`Queued`].
+    pending: Vec<Pending>,
     /// The nodes placed at the current step, indexed from [`Pending`].
     placed: Vec<PlacedNode<T>>,
     stats: TraversalStats,
@@ -114,6 +122,7 @@ impl<'a, T: Float> MeshPair<'a, T> {
             a,
             b,
             heap: BinaryHeap::with_capacity(256),
+            pending: Vec::with_capacity(512),
             placed: Vec::with_capacity(512),
             stats: TraversalStats::default(),
             accept: T::ONE,
@@ -356,6 +365,17 @@ impl<T: Float> MeshPair<'_, T> {
         )
     }
 
+    /// Puts a node pair in the best-first queue.
+    #[inline]
+    fn enqueue(&mut self, pair: Pending) {
+        let slot = self.pending.len() as u32;
+        self.heap.push(Queued {
+            key: pair.key,
+            slot,
+        });
+        self.pending.push(pair);
+    }
+
     /// Measures one triangle pair (leaf indices `i` in A, `j` in B): its
     /// exact distance (a witness) and, when it is apart, its own safe step
     /// along its closest direction, folded into `best` (Lemma 9.1). Returns
@@ -383,6 +403,7 @@ impl<T: Float> MeshPair<'_, T> {
             self.closest = Some((la.triangle, lb.triangle));
         }
         let (Ok(n), true) = (dir, cp.distance > contact_distance) else {
+            self.closest = Some((la.triangle, lb.triangle));
             return Some(StepResult::Touching {
                 witness: w,
                 normal: dir.ok().map(Direction::get),
@@ -410,7 +431,15 @@ fn slab_gap<T: Float>(ta: &[Vec3<T>; 3], tb: &[Vec3<T>; 3], n: Vec3<T>) -> T {
     lo_b - hi_a
 }
 
-/// A node pair waiting in the best-first queue, keyed by its safe step.
+/// An entry of the best-first queue: a node pair's safe step and where the
+/// pair is in `MeshPair::pending` (kept small: the queue moves its entries).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Queued {
+    key: OrdF64,
+    slot: u32,
+}
+
+/// A node pair waiting in the best-first queue.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Pending {
     key: OrdF64,
@@ -434,15 +463,15 @@ impl Pending {
     }
 }
 
-impl Eq for Pending {}
+impl Eq for Queued {}
 
-impl PartialOrd for Pending {
+impl PartialOrd for Queued {
     fn partial_cmp(&self, other: &Self) -> Option<core::cmp::Ordering> {
         Some(self.cmp(other))
     }
 }
 
-impl Ord for Pending {
+impl Ord for Queued {
     /// Reversed: `BinaryHeap` pops the pair with the least step first.
     fn cmp(&self, other: &Self) -> core::cmp::Ordering {
         other.key.0.total_cmp(&self.key.0)
@@ -519,8 +548,10 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         self.placed.clear();
         self.placed.push(pa.place(self.a, 0));
         self.placed.push(pb.place(self.b, 0));
-        self.heap.push(Pending::new(T::ZERO, (0, 0), false, (0, 1)));
-        while let Some(Pending { key, i, j, far, at }) = self.heap.pop() {
+        self.pending.clear();
+        self.enqueue(Pending::new(T::ZERO, (0, 0), false, (0, 1)));
+        while let Some(Queued { slot, .. }) = self.heap.pop() {
+            let Pending { key, i, j, far, at } = self.pending[slot as usize];
             let key = T::from_f64(key.0);
             if key >= best * self.accept {
                 // Best-first: every pair left has a step at least `key`, so
@@ -593,7 +624,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 let q = (self.placed[at.0 as usize], self.placed[at.1 as usize]);
                 let (step, far) = self.node_step(&pa, &pb, pair, q, rates, best);
                 if step < best {
-                    self.heap.push(Pending::new(step, pair, far, at));
+                    self.enqueue(Pending::new(step, pair, far, at));
                 } else {
                     self.stats.pruned += 1;
                 }
