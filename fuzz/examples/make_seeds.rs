@@ -1,9 +1,11 @@
 //! Writes the hand-crafted hard-case seeds to `corpus/<target>/seed-*`.
 //!
-//! Run from `fuzz/` with `cargo run --example make_seeds`. Every seed is
-//! decoded again with `arbitrary` (as libFuzzer's `fuzz_target!` does, with
-//! `arbitrary_take_rest`) and compared with the intended value, so a change
-//! of `arbitrary`'s byte format or of the input types is caught here.
+//! Run from `fuzz/` with `cargo run --example make_seeds`. Every seed of the
+//! `arbitrary`-decoded targets is decoded again (as libFuzzer's
+//! `fuzz_target!` does, with `arbitrary_take_rest`) and compared with the
+//! intended value, so a change of `arbitrary`'s byte format or of the input
+//! types is caught here. The `toi` target takes raw bytes: its seeds are
+//! written as they are.
 
 use std::fmt::Debug;
 use std::fs;
@@ -68,6 +70,15 @@ fn main() {
         let mut e = Enc::default();
         seeds::validation_case(&mut e, &case);
         write::<ValidationCase>("validation", &name, &e.0, &case);
+        count += 1;
+    }
+    // The `toi` target reads raw bytes (`motion_bound_fuzz::Bytes`).
+    for (name, bytes) in seeds::toi_seeds() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("corpus")
+            .join("toi");
+        fs::create_dir_all(&dir).expect("create corpus dir");
+        fs::write(dir.join(format!("seed-{name}")), &bytes).expect("write seed");
         count += 1;
     }
     println!("wrote {count} seeds");

@@ -28,6 +28,36 @@ pub mod seeds;
 
 pub use oracle::{check_one_sided, check_sound, Oracle, Scaled};
 
+/// Raw bytes read as bounded numbers, for targets whose input is a plain
+/// byte string (`toi`): each read takes the next bytes, and bytes past the
+/// end read as zero, so every input decodes.
+#[derive(Clone, Debug)]
+pub struct Bytes<'a> {
+    data: &'a [u8],
+    at: usize,
+}
+
+impl<'a> Bytes<'a> {
+    /// Reads `data` from its start.
+    #[must_use]
+    pub const fn new(data: &'a [u8]) -> Self {
+        Self { data, at: 0 }
+    }
+
+    /// The next byte (zero past the end).
+    pub fn u8(&mut self) -> u8 {
+        let b = self.data.get(self.at).copied().unwrap_or(0);
+        self.at += 1;
+        b
+    }
+
+    /// The next two bytes as a value in `[lo, hi]`: `lo + (hi - lo) k / 65535`.
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        let k = u16::from_le_bytes([self.u8(), self.u8()]);
+        lo + (hi - lo) * f64::from(k) / 65535.0
+    }
+}
+
 /// Vertices of a [`CaseSpec`] beyond this many are dropped before the case is
 /// built: the high-precision oracle costs microseconds per vertex, and a
 /// longer list only repeats the per-vertex cases (the bounds take a maximum
@@ -384,4 +414,22 @@ pub mod inputs {
 
     /// The `validation` target's input.
     pub type ValidationCase = Precisions<RawInput<f32>, RawInput<f64>>;
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Bytes;
+
+    #[test]
+    fn bytes_read_zero_past_the_end_and_span_the_range() {
+        let mut b = Bytes::new(&[7, 0xff, 0xff, 0x00]);
+        assert_eq!(b.u8(), 7);
+        // 0xffff: the top of the range, exactly.
+        assert_eq!(b.range(-2.0, 3.0), 3.0);
+        // One byte left, then zeros: 0x0000 is the bottom.
+        assert_eq!(b.range(-2.0, 3.0), -2.0);
+        assert_eq!(b.u8(), 0);
+        let mut e = Bytes::new(&[]);
+        assert_eq!((e.u8(), e.range(-1.0, 1.0)), (0, -1.0));
+    }
 }

@@ -577,3 +577,128 @@ fn validation_inputs<T: Precision>() -> Vec<(String, RawInput<T>)> {
 pub fn validation_cases() -> Vec<(String, ValidationCase)> {
     in_both(validation_inputs::<f32>(), validation_inputs::<f64>())
 }
+
+/// Raw bytes for the `toi` target, written as `motion_bound_fuzz::Bytes`
+/// reads them.
+#[derive(Clone, Debug, Default)]
+struct ToiBytes(Vec<u8>);
+
+impl ToiBytes {
+    fn u8(&mut self, b: u8) -> &mut Self {
+        self.0.push(b);
+        self
+    }
+
+    /// The two bytes that `Bytes::range(lo, hi)` reads as (about) `x`.
+    fn value(&mut self, x: f64, lo: f64, hi: f64) -> &mut Self {
+        let k = ((x - lo) / (hi - lo) * 65535.0).round().clamp(0.0, 65535.0) as u16;
+        self.0.extend_from_slice(&k.to_le_bytes());
+        self
+    }
+
+    fn body(&mut self, triangles: &[[[f64; 3]; 3]]) -> &mut Self {
+        self.u8((triangles.len() - 1) as u8);
+        for tri in triangles {
+            for v in tri {
+                for &x in v {
+                    self.value(x, -1.0, 1.0);
+                }
+            }
+        }
+        self
+    }
+
+    fn vector(&mut self, v: [f64; 3], half: f64) -> &mut Self {
+        for x in v {
+            self.value(x, -half, half);
+        }
+        self
+    }
+
+    /// A spin: the selector byte, then the vector unless it is zero.
+    fn spin(&mut self, w: Option<[f64; 3]>) -> &mut Self {
+        match w {
+            None => self.u8(0),
+            Some(w) => self.u8(1).vector(w, 20.0),
+        }
+    }
+}
+
+/// Hand-made scenes for the `toi` target: each `(A's triangles, B's
+/// triangles, A's centre, velocity and spin, B's, then the parameter bytes)`.
+#[must_use]
+pub fn toi_seeds() -> Vec<(String, Vec<u8>)> {
+    let big = [[-0.9, -0.9, 0.0], [0.9, -0.9, 0.0], [0.0, 0.9, 0.0]];
+    let thin = [[-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 0.02, 0.0]];
+    let point = [[0.3, 0.3, 0.3]; 3];
+    let edge = [[-0.5, 0.0, 0.0], [0.5, 0.0, 0.0], [0.0, 0.0, 0.0]];
+    type Scene = (
+        &'static str,
+        Vec<[[f64; 3]; 3]>,
+        Vec<[[f64; 3]; 3]>,
+        [[f64; 3]; 2],
+        Option<[f64; 3]>,
+        [[f64; 3]; 2],
+        Option<[f64; 3]>,
+    );
+    let scenes: Vec<Scene> = vec![
+        (
+            "head-on-spinning",
+            vec![big],
+            vec![big],
+            [[0.0, 0.0, 2.5], [0.0, 0.0, -4.0]],
+            Some([3.0, 0.0, 1.0]),
+            [[0.0; 3], [0.0; 3]],
+            Some([0.0, 0.0, 2.0]),
+        ),
+        (
+            "fast-thin-blade",
+            vec![thin],
+            vec![big, edge],
+            [[0.0, 0.0, 0.5], [0.0, 0.0, -0.5]],
+            Some([0.0, 19.0, 0.0]),
+            [[0.0; 3], [0.0; 3]],
+            None,
+        ),
+        (
+            "initial-contact",
+            vec![big],
+            vec![big],
+            [[0.1, 0.0, 0.0], [1.0, 0.0, 0.0]],
+            None,
+            [[0.0; 3], [0.0; 3]],
+            None,
+        ),
+        (
+            "parallel-miss",
+            vec![big],
+            vec![big],
+            [[-2.9, 0.0, 0.5], [5.0, 0.0, 0.0]],
+            None,
+            [[0.0; 3], [0.0; 3]],
+            None,
+        ),
+        (
+            "degenerate-point-and-edge",
+            vec![point, edge],
+            vec![edge, big, thin, point],
+            [[2.0, 0.3, 0.0], [-4.0, 0.0, 0.0]],
+            Some([0.0, 0.0, 20.0]),
+            [[0.0; 3], [0.0; 3]],
+            Some([7.0, -7.0, 7.0]),
+        ),
+    ];
+    let mut out = vec![("empty".to_string(), Vec::new())];
+    for (k, (name, a, b, [ca, va], wa, [cb, vb], wb)) in scenes.into_iter().enumerate() {
+        let mut e = ToiBytes::default();
+        e.body(&a).body(&b);
+        e.vector(ca, 3.0).vector(va, 6.0).spin(wa);
+        e.vector(cb, 1.0).vector(vb, 2.0).spin(wb);
+        // Bound, contact distance, horizon, far ratio, accept, one-sided:
+        // a different choice per scene.
+        let k = k as u8;
+        e.u8(k).u8(k).u8(k).u8(k).u8(k).u8(k);
+        out.push((name.to_string(), e.0));
+    }
+    out
+}
