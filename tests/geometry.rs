@@ -264,7 +264,21 @@ fn check_triangle_pair<T: Float>(a64: &Tri, b64: &Tri) -> Result<(), TestCaseErr
         .map_err(|e| TestCaseError::fail(format!("{e}")))?;
     let g = gjk_distance(&pa, &pb, &GjkParams::default());
     let lb = g.lower_bound.to_f64();
-    prop_assert!(d >= lb, "below GJK's certified lower bound: {d} < {lb}");
+    if d == 0.0 {
+        // `triangle_triangle` reports 0 when its intersection test says the
+        // triangles meet and its closest pair is within `2^10 u s` (its
+        // documented accuracy: near a degenerate configuration, e.g. a
+        // sliver, the filtered test leans to "meet"). Then the pair is at
+        // most that far apart (plus the candidates' rounding), which GJK's
+        // certified bound may not contradict.
+        let snap = (1024.0 + 64.0) * u * s;
+        prop_assert!(
+            lb <= snap,
+            "0 for triangles GJK certifies {lb} apart (beyond the snap {snap})"
+        );
+    } else {
+        prop_assert!(d >= lb, "below GJK's certified lower bound: {d} < {lb}");
+    }
     if g.converged && !g.intersecting {
         let tight = 32768.0 * u * s;
         prop_assert!(
@@ -287,6 +301,36 @@ proptest! {
     #[test]
     fn triangle_distance_is_realised_optimal_and_matches_sampling_f32((a, b) in pair()) {
         check_triangle_pair::<f32>(&a, &b)?;
+    }
+}
+
+/// A sliver (nearly collinear corners, about 1e-4 wide over 1.4) against a
+/// degenerate triangle (a short segment) just below it: the case a random
+/// run found, where Ericson's region signs were rounding noise in `f32` and
+/// the witness on the sliver came out a sliver's width off it.
+#[test]
+fn a_point_on_a_sliver_is_on_it() {
+    let a: Tri = [[-0.004954330203832879, 0.0, 0.0], [0.0; 3], [0.0; 3]];
+    let b: Tri = [
+        [-0.9698743650370552, 0.8989657507748913, 1e-9],
+        [0.04337087761389626, 0.3590708888529945, 1e-9],
+        [0.35636941772486513, 0.19251574083948125, 1e-9],
+    ];
+    for (x, y) in [(&a, &b), (&b, &a)] {
+        check_triangle_pair::<f32>(x, y).unwrap();
+        check_triangle_pair::<f64>(x, y).unwrap();
+    }
+    // Points along edge BC, in f32: on the sliver up to the rounding of
+    // their own coordinates, so at rounding distance from it (the corners
+    // are within 1 of the origin).
+    let t32 = to_t::<f32>(&round_to::<f32>(&b));
+    for k in 1..8u8 {
+        let p = t32[1] + (t32[2] - t32[1]) * (f32::from(k) / 8.0);
+        let d = point_triangle(p, t32).distance;
+        assert!(
+            f64::from(d) <= 64.0 * f64::from(f32::EPSILON),
+            "the point {k}/8 along an edge of the sliver is {d} from it"
+        );
     }
 }
 

@@ -304,47 +304,30 @@ fn seg_seg<T: Float>(p0: Vec3<T>, p1: Vec3<T>, q0: Vec3<T>, q1: Vec3<T>) -> (Vec
     (best.on_a, best.on_b)
 }
 
-/// Ericson's `ClosestPtPointTriangle`, in scaled coordinates, with the edges
-/// as a fallback in the face region.
+/// The point of triangle `abc` closest to `p`, in scaled coordinates: the
+/// nearest of the face point (when `p` projects inside, by the signs of
+/// Ericson's barycentric numerators `va, vb, vc`) and the closest points of
+/// the three edges.
+///
+/// Every candidate is a point of the triangle up to rounding (the face point
+/// is a convex combination, offered only when the three numerators are
+/// non-negative), and the exact closest point is either the face point or on
+/// an edge, so the nearest candidate is the closest point up to rounding
+/// whatever the triangle's shape. Ericson's early returns by Voronoi region
+/// are not used: for a sliver (nearly collinear corners) the region signs
+/// are rounding noise, and a point on one edge could be sent to another edge
+/// a sliver's width away (`tests/geometry.rs`,
+/// `a_point_on_a_sliver_is_on_it`).
 fn closest_on_triangle<T: Float>(p: Vec3<T>, a: Vec3<T>, b: Vec3<T>, c: Vec3<T>) -> Vec3<T> {
     let zero = T::ZERO;
-    let (ab, ac, ap) = (b - a, c - a, p - a);
+    let (ab, ac, ap, bp, cp) = (b - a, c - a, p - a, p - b, p - c);
     let (d1, d2) = (ab.dot(ap), ac.dot(ap));
-    if d1 <= zero && d2 <= zero {
-        return a; // vertex region A
-    }
-    let bp = p - b;
     let (d3, d4) = (ab.dot(bp), ac.dot(bp));
-    if d3 >= zero && d4 <= d3 {
-        return b; // vertex region B
-    }
-    let vc = d1 * d4 - d3 * d2;
-    // Edge regions. A zero-length edge passes its region test vacuously, so
-    // it is skipped (the face-region fallback below tries every edge).
-    let den = d1 - d3;
-    if vc <= zero && d1 >= zero && d3 <= zero && den > zero {
-        return a + ab * (d1 / den); // edge AB
-    }
-    let cp = p - c;
     let (d5, d6) = (ab.dot(cp), ac.dot(cp));
-    if d6 >= zero && d5 <= d6 {
-        return c; // vertex region C
-    }
-    let vb = d5 * d2 - d1 * d6;
-    let den = d2 - d6;
-    if vb <= zero && d2 >= zero && d6 <= zero && den > zero {
-        return a + ac * (d2 / den); // edge AC
-    }
-    let va = d3 * d6 - d5 * d4;
-    let (e1, e2) = (d4 - d3, d5 - d6);
-    let den = e1 + e2;
-    if va <= zero && e1 >= zero && e2 >= zero && den > zero {
-        return b + (c - b) * (e1 / den); // edge BC
-    }
-    // Face region (or a degenerate triangle whose tests all failed).
+    let (va, vb, vc) = (d3 * d6 - d5 * d4, d5 * d2 - d1 * d6, d1 * d4 - d3 * d2);
     let mut best = Best::new();
     let den = va + vb + vc;
-    if den > zero {
+    if va >= zero && vb >= zero && vc >= zero && den > zero {
         best.offer(p, a + ab * (vb / den) + ac * (vc / den));
     }
     best.offer(p, closest_on_segment(p, a, b));

@@ -253,7 +253,9 @@ pub struct GjkResult<T> {
     /// The witness point on `B` (equal to `on_a` when intersecting).
     pub on_b: Vec3<T>,
     /// The unit direction from `A` towards `B` (`-v / |v|`), or `None` when
-    /// the bodies intersect or are too close for a direction.
+    /// no positive separation along it can be certified (the bodies
+    /// intersect or touch, are too close for a direction, or GJK stopped
+    /// with a direction that does not separate them); then `lower_bound` is 0.
     pub direction: Option<Vec3<T>>,
     /// The origin was found inside (or within rounding of) `A - B`.
     pub intersecting: bool,
@@ -393,13 +395,17 @@ where
         None
     };
     let lower_bound = direction.map_or(zero, |d| certified_separation(a, b, d).min_nan(distance));
+    // A direction is returned only with a positive certified separation
+    // along it: one that does not separate the bodies (GJK stopped early, or
+    // they touch) certifies nothing, and `lower_bound` is then 0.
+    let (lower_bound, direction) = if lower_bound > zero {
+        (lower_bound, direction)
+    } else {
+        (zero, None)
+    };
     GjkResult {
         distance,
-        lower_bound: if lower_bound > zero {
-            lower_bound
-        } else {
-            zero
-        },
+        lower_bound,
         on_a,
         on_b,
         direction,
