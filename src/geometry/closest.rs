@@ -117,12 +117,14 @@ pub fn segment_segment<T: Float>(
 
 /// The closest point to `p` on the (solid) triangle `[a, b, c]`.
 ///
-/// Ericson's region method (C. Ericson, *Real-Time Collision Detection*,
-/// 2005, section 5.1.5): `p` is classified against the Voronoi regions of the
-/// vertices and edges by dot products, and projected onto the plane in the
-/// face region. When the face region is reached the three edges are also
-/// tried and the closest candidate kept, which covers degenerate triangles
-/// (there the face test divides by a vanishing area) and guards thin ones.
+/// The nearest of four candidates: the projection onto the plane when `p`
+/// projects inside the triangle (by the signs of the barycentric numerators
+/// of Ericson's region method, C. Ericson, *Real-Time Collision Detection*,
+/// 2005, section 5.1.5) and the closest points of the three edges. Every
+/// candidate is a point of the triangle up to rounding and the closest point
+/// is one of them, so degenerate triangles (a vanishing area) and slivers
+/// (where the region signs are rounding noise) get their closest point up to
+/// rounding too.
 /// `on_a` is `p` itself, `on_b` the point on the triangle.
 ///
 /// ```
