@@ -178,7 +178,9 @@ pub fn point_triangle<T: Float>(p: Vec3<T>, [a, b, c]: [Vec3<T>; 3]) -> ClosestP
 /// small-integer coordinates and for shared vertices). In configurations
 /// within rounding of a degenerate one the result may be a rounding-level
 /// positive distance for touching triangles, or 0 for triangles a
-/// rounding-level distance apart. "Rounding-level" scales with the
+/// rounding-level distance apart — but never 0 when the slab between the
+/// corners along the closest pair's direction certainly has a positive width
+/// (its computed width above the rounding of its evaluation). "Rounding-level" scales with the
 /// conditioning of the planes: about `u s / sin(worst angle)` of the
 /// thinner triangle, since a point's distance to a sliver's plane goes
 /// through a normal computed from nearly parallel edges (a touching pair
@@ -232,11 +234,30 @@ pub fn triangle_triangle<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3]) -> Closes
         .chain(b.iter())
         .fold(T::ZERO, |m, p| m.max_nan(p.max_abs()));
     let tol = T::from_u32(1024) * T::UNIT_ROUNDOFF * m;
-    if best.d2 > T::ZERO && best.d2 <= tol * tol && triangles_meet(&a, &b) {
+    if best.d2 > T::ZERO
+        && best.d2 <= tol * tol
+        && !slab_separates(&a, &b, y - x, m)
+        && triangles_meet(&a, &b)
+    {
         let mid = x.lerp(y, T::HALF);
         (x, y) = (mid, mid);
     }
     ClosestPoints::from_scaled(&s, x, y)
+}
+
+/// Whether the slab between the triangles along `n` (from `a` towards `b`)
+/// certainly has a positive width: `min_b q.n - max_a p.n` above the
+/// rounding of its evaluation. Each computed dot product errs by at most
+/// `gamma_3 m |n|_1` (`m` the largest absolute coordinate), so a computed
+/// width above `16 u m |n|_1` is positive in exact arithmetic for this `n`,
+/// and then no point is common to the triangles: the filtered intersection
+/// test's "meet", which leans to yes near degenerate configurations, is
+/// overruled and the distance is not snapped to 0.
+fn slab_separates<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3], n: Vec3<T>, m: T) -> bool {
+    let lo_b = b[0].dot(n).min_nan(b[1].dot(n)).min_nan(b[2].dot(n));
+    let hi_a = a[0].dot(n).max_nan(a[1].dot(n)).max_nan(a[2].dot(n));
+    let err = T::from_u32(16) * T::UNIT_ROUNDOFF * m * n.norm_l1();
+    lo_b - hi_a > err
 }
 
 /// The closest pair so far (by squared distance; a NaN candidate never wins
