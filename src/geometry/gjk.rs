@@ -232,6 +232,11 @@ impl<T: Float> Default for GjkParams<T> {
 ///   returned `direction` itself (two extra support calls), so it holds
 ///   whatever the iteration did, including at the iteration cap. It is 0
 ///   when nothing positive can be certified (intersection, touching, NaN).
+///   When the bound from `-v` falls short of `distance` by more than
+///   `64 u max|w|`, a second direction, recomputed orthogonal to the final
+///   simplex, is certified too (two more support calls) and the better is
+///   kept: at a gap far below the bodies' size (1e-9 at unit scale), the
+///   rounding of `v` alone tilts it enough to certify nothing.
 /// * **`distance` is an estimate from above.** It is `|on_b - on_a|` for
 ///   convex combinations of support points, so it is at least the true
 ///   distance up to rounding and support slack. It **can over-estimate** the
@@ -252,7 +257,8 @@ pub struct GjkResult<T> {
     pub on_a: Vec3<T>,
     /// The witness point on `B` (equal to `on_a` when intersecting).
     pub on_b: Vec3<T>,
-    /// The unit direction from `A` towards `B` (`-v / |v|`), or `None` when
+    /// The unit direction from `A` towards `B` (`-v / |v|`, or its
+    /// refinement orthogonal to the final simplex), or `None` when
     /// no positive separation along it can be certified (the bodies
     /// intersect or touch, are too close for a direction, or GJK stopped
     /// with a direction that does not separate them); then `lower_bound` is 0.
@@ -389,12 +395,29 @@ where
         };
     }
     let distance = (on_b - on_a).length();
-    let direction = if v.length() >= T::TINY_LENGTH {
+    let mut direction = if v.length() >= T::TINY_LENGTH {
         (-v).try_normalize()
     } else {
         None
     };
-    let lower_bound = direction.map_or(zero, |d| certified_separation(a, b, d).min_nan(distance));
+    let mut lower_bound =
+        direction.map_or(zero, |d| certified_separation(a, b, d).min_nan(distance));
+    // A rounded `v` is off the simplex's normal by about `u |w| / |v|`, which
+    // at a tiny distance tilts `direction` enough to lose the separation over
+    // the bodies' extent. When the bound falls short of the distance by more
+    // than rounding, the direction recomputed orthogonal to the support
+    // simplex is tried as well; any direction certifies soundly, so the
+    // better of the two is kept.
+    let short = T::from_u32(64) * u * max_w2.sqrt();
+    if !(distance - lower_bound <= short) {
+        if let Some(d) = refined_direction(&w[..n], v) {
+            let lb = certified_separation(a, b, d).min_nan(distance);
+            if lb > lower_bound {
+                lower_bound = lb;
+                direction = Some(d);
+            }
+        }
+    }
     // A direction is returned only with a positive certified separation
     // along it: one that does not separate the bodies (GJK stopped early, or
     // they touch) certifies nothing, and `lower_bound` is then 0.
@@ -412,6 +435,40 @@ where
         intersecting,
         converged,
         iterations,
+    }
+}
+
+/// The unit direction from the origin's nearest point of the support
+/// simplex `w` (one to three points, `v` its rounded nearest point) towards
+/// the origin, recomputed orthogonal to the simplex: for a segment `v` minus
+/// its component along the edge, for a triangle the normal `e1 x e2` scaled by
+/// `w0 . (e1 x e2)`. The rounding of `v` along the simplex, which GJK's
+/// barycentric combination leaves at `u |w|`, is removed; what remains is
+/// `u |v|` plus second-order terms. Only a candidate: the caller certifies it.
+fn refined_direction<T: Float>(w: &[Vec3<T>], v: Vec3<T>) -> Option<Vec3<T>> {
+    let r = match *w {
+        [w0, w1] => {
+            let e = w1 - w0;
+            let ee = e.length_squared();
+            if !(ee > T::ZERO) {
+                return None;
+            }
+            v - e * (v.dot(e) / ee)
+        }
+        [w0, w1, w2] => {
+            let nrm = (w1 - w0).cross(w2 - w0);
+            let nn = nrm.length_squared();
+            if !(nn > T::ZERO) {
+                return None;
+            }
+            nrm * (w0.dot(nrm) / nn)
+        }
+        _ => return None,
+    };
+    if r.length() >= T::TINY_LENGTH {
+        (-r).try_normalize()
+    } else {
+        None
     }
 }
 
@@ -494,6 +551,31 @@ mod tests {
         );
         let r = gjk_distance(&a, &a, &GjkParams::default());
         assert!(r.intersecting && r.distance == 0.0, "a point and itself");
+    }
+
+    /// A segment 1e-9 below another at unit scale (found by a random
+    /// proptest run of tests/geometry.rs). GJK's `v` is off the normal by
+    /// about `u / 1e-9` radians, which over the unit extent loses the whole
+    /// separation: the bound was 0. The refined direction keeps it within
+    /// rounding of the distance.
+    #[test]
+    fn a_tiny_gap_is_certified_within_rounding() {
+        let y = 0.993_948_810_464_696_4;
+        let a = [[-1.0f64, y, 0.0], [-1.0, -1.0, 0.0], [-1.0, y, 0.0]];
+        let b = [[0.0f64, 0.0, 1e-9], [0.0, 0.0, 1e-9], [-1.0, 0.5, 1e-9]];
+        let pa = ConvexPolytope::try_new(&a, Pose::IDENTITY).unwrap();
+        let pb = ConvexPolytope::try_new(&b, Pose::IDENTITY).unwrap();
+        for (p, q) in [(&pa, &pb), (&pb, &pa)] {
+            let r = gjk_distance(p, q, &GjkParams::default());
+            assert!(r.converged && !r.intersecting, "{r:?}");
+            let tight = 32768.0 * f64::EPSILON / 2.0;
+            assert!(
+                r.lower_bound <= 1e-9 && r.lower_bound >= 1e-9 - tight,
+                "bound {} for a gap of 1e-9",
+                r.lower_bound
+            );
+            assert!(r.direction.is_some(), "a certified direction");
+        }
     }
 
     #[test]
