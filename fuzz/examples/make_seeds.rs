@@ -4,8 +4,8 @@
 //! `arbitrary`-decoded targets is decoded again (as libFuzzer's
 //! `fuzz_target!` does, with `arbitrary_take_rest`) and compared with the
 //! intended value, so a change of `arbitrary`'s byte format or of the input
-//! types is caught here. The `toi` target takes raw bytes: its seeds are
-//! written as they are.
+//! types is caught here. The `toi` and `gjk` targets take raw bytes: their
+//! seeds are written as they are.
 
 use std::fmt::Debug;
 use std::fs;
@@ -77,6 +77,15 @@ fn main() {
         let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("corpus")
             .join("toi");
+        fs::create_dir_all(&dir).expect("create corpus dir");
+        fs::write(dir.join(format!("seed-{name}")), &bytes).expect("write seed");
+        count += 1;
+    }
+    // So does the `gjk` target.
+    for (name, bytes) in seeds::gjk_seeds() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("corpus")
+            .join("gjk");
         fs::create_dir_all(&dir).expect("create corpus dir");
         fs::write(dir.join(format!("seed-{name}")), &bytes).expect("write seed");
         count += 1;

@@ -702,3 +702,93 @@ pub fn toi_seeds() -> Vec<(String, Vec<u8>)> {
     }
     out
 }
+
+/// Seeds of the `gjk` target (raw bytes, as `fuzz_targets/gjk.rs` reads
+/// them): a coordinate is a selector byte, then a grid byte (selector 0:
+/// `k / 2 - 1`) or two range bytes; after both bodies come the gap, its axis,
+/// the scale and the precision.
+#[must_use]
+pub fn gjk_seeds() -> Vec<(String, Vec<u8>)> {
+    struct Scene {
+        name: &'static str,
+        a: Vec<[f64; 3]>,
+        b: Vec<[f64; 3]>,
+        /// Gap choice (0, 1e-12, 1e-9, 1e-6, 1e-3, 0.5), axis, scale choice
+        /// (1, 1e-3, 1e3, 2^-40), precision (0: f64, 1: f32).
+        tail: [u8; 4],
+    }
+    let cube = |lo: f64| -> Vec<[f64; 3]> {
+        (0..8)
+            .map(|k| {
+                let c = |bit: u32| lo + f64::from((k >> bit) & 1);
+                [c(0), c(1), c(2)]
+            })
+            .collect()
+    };
+    let y = 0.993_948_810_464_696_4;
+    let scenes = vec![
+        // The case that certified 0 before the refined direction (a4d46c0).
+        Scene {
+            name: "tiny-gap-segments",
+            a: vec![[-1.0, y, 0.0], [-1.0, -1.0, 0.0], [-1.0, y, 0.0]],
+            b: vec![[0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [-1.0, 0.5, 0.0]],
+            tail: [2, 2, 0, 0],
+        },
+        Scene {
+            name: "touching-cubes",
+            a: cube(-1.0),
+            b: cube(0.0),
+            tail: [0, 0, 0, 0],
+        },
+        Scene {
+            name: "point-in-tetrahedron",
+            a: vec![
+                [-1.0, -1.0, -1.0],
+                [1.0, -1.0, -1.0],
+                [0.0, 1.0, -1.0],
+                [0.0, 0.0, 1.0],
+            ],
+            b: vec![[0.0, -0.5, -0.5]],
+            tail: [0, 0, 0, 1],
+        },
+        Scene {
+            name: "parallel-squares-1e-12",
+            a: vec![
+                [-1.0, -1.0, 0.0],
+                [1.0, -1.0, 0.0],
+                [1.0, 1.0, 0.0],
+                [-1.0, 1.0, 0.0],
+            ],
+            b: vec![[-0.5, -0.5, 0.0], [1.0, -0.5, 0.0], [0.5, 1.0, 0.0]],
+            tail: [1, 2, 2, 0],
+        },
+        Scene {
+            name: "apart-tiny-scale",
+            a: cube(-1.0),
+            b: vec![[0.3, 0.2, 0.1], [0.9, 0.1, 0.7]],
+            tail: [5, 0, 3, 1],
+        },
+    ];
+    let grid = |x: f64| -> Option<u8> {
+        let k = (x + 1.0) * 2.0;
+        (k.fract() == 0.0 && (0.0..=4.0).contains(&k)).then_some(k as u8)
+    };
+    let mut out = vec![("empty".to_string(), Vec::new())];
+    for sc in scenes {
+        let mut e = ToiBytes::default();
+        for body in [&sc.a, &sc.b] {
+            e.u8((body.len() - 1) as u8);
+            for &x in body.iter().flatten() {
+                match grid(x) {
+                    Some(k) => e.u8(0).u8(k),
+                    None => e.u8(1).value(x, -1.0, 1.0),
+                };
+            }
+        }
+        for t in sc.tail {
+            e.u8(t);
+        }
+        out.push((sc.name.to_string(), e.0));
+    }
+    out
+}

@@ -240,10 +240,14 @@ impl<T: Float> Default for GjkParams<T> {
 /// * **`distance` is an estimate from above.** It is `|on_b - on_a|` for
 ///   convex combinations of support points, so it is at least the true
 ///   distance up to rounding and support slack. It **can over-estimate** the
-///   true distance: when `converged` is true and the bodies are apart, by
-///   about `rel_tol * distance` (plus rounding of the test); when
-///   `converged` is false (iteration cap, or no progress under rounding),
-///   by an amount that is not bounded. A conservative-advancement step must
+///   true distance: when `converged` is true, by about
+///   `rel_tol * distance` plus the rounding of the barycentric solve, which
+///   is about `u s` (`s` the scale of the points) times the condition number
+///   of the final simplex: a point on an edge of a flat quadrilateral 0.003
+///   thick converged at `1.46e-12` (about `6,600 u s`) from a true 0, with
+///   `intersecting == false` and `lower_bound == 0` (the `gjk` fuzz
+///   target's finding). When `converged` is false (iteration cap, or no
+///   progress under rounding), by an amount that is not bounded. A conservative-advancement step must
 ///   therefore use `lower_bound` (an over-estimate of the distance makes the
 ///   step too long), and `direction` as its `n`.
 #[derive(Clone, Copy, Debug, PartialEq)]
