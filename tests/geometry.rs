@@ -407,10 +407,26 @@ proptest! {
 
 // ------------------------------------------------ floating vs exact meeting
 
-/// `strict`: the decisions must agree exactly (generic and small-integer
-/// input). Otherwise (planted near-contact) a disagreement is allowed only
-/// within rounding: the float distance must then be tiny.
-fn check_meeting<T: Float>(a64: &Tri, b64: &Tri, strict: bool) -> Result<(), TestCaseError> {
+/// How strictly the float decision must match the exact one.
+#[derive(Clone, Copy, PartialEq)]
+enum Agreement {
+    /// Exactly (small-integer input: every sign is certain or exactly 0).
+    Exact,
+    /// Exactly, except the documented snap: a pair the exact test finds
+    /// apart may be reported at distance 0 only if it is within the snap
+    /// distance `1024 u s kappa`, measured by GJK in `f64` on the same
+    /// rounded triangles (an independent algorithm). Random triangles with
+    /// grid-biased coordinates land there about once in 20,000 pairs (an
+    /// `f32` vertex 8.8e-7, about 15 `u`, from an edge of the other
+    /// triangle: `tests/geometry.proptest-regressions`).
+    Generic,
+    /// Planted near-contact: a disagreement only within rounding.
+    Near,
+}
+
+/// The float meeting decision (distance 0) against the exact predicates.
+fn check_meeting<T: Float>(a64: &Tri, b64: &Tri, agree: Agreement) -> Result<(), TestCaseError> {
+    let strict = agree != Agreement::Near;
     let (a64, b64) = (round_to::<T>(a64), round_to::<T>(b64));
     let exact = triangles_intersect_exact(&a64, &b64);
     prop_assert_eq!(
@@ -431,6 +447,21 @@ fn check_meeting<T: Float>(a64: &Tri, b64: &Tri, strict: bool) -> Result<(), Tes
     // sliver's condition factor (120); see `triangle_triangle`'s "Accuracy".
     let kappa = plane_condition(&a64).max(plane_condition(&b64));
     let tol = 1024.0 * T::UNIT_ROUNDOFF.to_f64() * s * kappa;
+    if agree == Agreement::Generic && !exact && (d == 0.0 || d_swapped == 0.0) {
+        let va = a64.to_vec();
+        let vb = b64.to_vec();
+        let pa = ConvexPolytope::try_new(&va, Pose::IDENTITY)
+            .map_err(|e| TestCaseError::fail(format!("{e}")))?;
+        let pb = ConvexPolytope::try_new(&vb, Pose::IDENTITY)
+            .map_err(|e| TestCaseError::fail(format!("{e}")))?;
+        let g = gjk_distance(&pa, &pb, &GjkParams::default());
+        prop_assert!(
+            g.converged && g.distance <= tol,
+            "snapped to 0 beyond the snap distance: GJK distance {} > {tol:e} ({g:?})",
+            g.distance
+        );
+        return Ok(());
+    }
     if strict {
         prop_assert_eq!(
             d == 0.0,
@@ -486,22 +517,23 @@ proptest! {
         // Small-integer pairs and generic pairs must agree exactly; the other
         // families of `pair` are within rounding of degenerate by design.
         let integer = a.iter().chain(b.iter()).flatten().all(|x| x.fract() == 0.0 && x.abs() <= 2.0);
-        check_meeting::<f64>(&a, &b, integer)?;
-        check_meeting::<f32>(&a, &b, integer)?;
+        let agree = if integer { Agreement::Exact } else { Agreement::Near };
+        check_meeting::<f64>(&a, &b, agree)?;
+        check_meeting::<f32>(&a, &b, agree)?;
     }
 
     #[test]
     fn meeting_agrees_with_exact_predicates_on_random_triangles(
         a in [point(), point(), point()], b in [point(), point(), point()]
     ) {
-        check_meeting::<f64>(&a, &b, true)?;
-        check_meeting::<f32>(&a, &b, true)?;
+        check_meeting::<f64>(&a, &b, Agreement::Generic)?;
+        check_meeting::<f32>(&a, &b, Agreement::Generic)?;
     }
 
     #[test]
     fn near_contact_disagrees_only_within_rounding((a, b) in touching()) {
-        check_meeting::<f64>(&a, &b, false)?;
-        check_meeting::<f32>(&a, &b, false)?;
+        check_meeting::<f64>(&a, &b, Agreement::Near)?;
+        check_meeting::<f32>(&a, &b, Agreement::Near)?;
     }
 }
 
