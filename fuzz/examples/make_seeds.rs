@@ -31,6 +31,18 @@ fn write<T: for<'a> Arbitrary<'a> + Debug>(target: &str, name: &str, bytes: &[u8
     fs::write(dir.join(format!("seed-{name}")), bytes).expect("write seed");
 }
 
+/// Writes raw-byte seeds as they are; returns how many.
+fn write_raw(target: &str, seeds: Vec<(String, Vec<u8>)>) -> usize {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("corpus")
+        .join(target);
+    fs::create_dir_all(&dir).expect("create corpus dir");
+    for (name, bytes) in &seeds {
+        fs::write(dir.join(format!("seed-{name}")), bytes).expect("write seed");
+    }
+    seeds.len()
+}
+
 fn main() {
     let mut count = 0;
     for (i, (name, spec)) in seeds::hard_specs().into_iter().enumerate() {
@@ -72,23 +84,8 @@ fn main() {
         write::<ValidationCase>("validation", &name, &e.0, &case);
         count += 1;
     }
-    // The `toi` target reads raw bytes (`motion_bound_fuzz::Bytes`).
-    for (name, bytes) in seeds::toi_seeds() {
-        let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("corpus")
-            .join("toi");
-        fs::create_dir_all(&dir).expect("create corpus dir");
-        fs::write(dir.join(format!("seed-{name}")), &bytes).expect("write seed");
-        count += 1;
-    }
-    // So does the `gjk` target.
-    for (name, bytes) in seeds::gjk_seeds() {
-        let dir = Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("corpus")
-            .join("gjk");
-        fs::create_dir_all(&dir).expect("create corpus dir");
-        fs::write(dir.join(format!("seed-{name}")), &bytes).expect("write seed");
-        count += 1;
-    }
+    // The `toi` and `gjk` targets read raw bytes (`motion_bound_fuzz::Bytes`).
+    count += write_raw("toi", seeds::toi_seeds());
+    count += write_raw("gjk", seeds::gjk_seeds());
     println!("wrote {count} seeds");
 }

@@ -704,9 +704,11 @@ pub fn toi_seeds() -> Vec<(String, Vec<u8>)> {
 }
 
 /// Seeds of the `gjk` target (raw bytes, as `fuzz_targets/gjk.rs` reads
-/// them): a coordinate is a selector byte, then a grid byte (selector 0:
-/// `k / 2 - 1`) or two range bytes; after both bodies come the gap, its axis,
-/// the scale and the precision.
+/// them): each body is a count byte (`len - 1`) and its coordinates, each a
+/// selector byte, then a grid byte (selector 0: `k / 2 - 1`) or two range
+/// bytes; after both bodies come the gap, its axis, the scale and the
+/// precision bytes, then one placement per body (selector 1: nine matrix
+/// entries and a translation, as range bytes; missing bytes: identity).
 #[must_use]
 pub fn gjk_seeds() -> Vec<(String, Vec<u8>)> {
     struct Scene {
@@ -716,6 +718,8 @@ pub fn gjk_seeds() -> Vec<(String, Vec<u8>)> {
         /// Gap choice (0, 1e-12, 1e-9, 1e-6, 1e-3, 0.5), axis, scale choice
         /// (1, 1e-3, 1e3, 2^-40), precision (0: f64, 1: f32).
         tail: [u8; 4],
+        /// A's placement by a matrix and a translation (B: identity).
+        pose_a: Option<([[f64; 3]; 3], [f64; 3])>,
     }
     let cube = |lo: f64| -> Vec<[f64; 3]> {
         (0..8)
@@ -727,18 +731,21 @@ pub fn gjk_seeds() -> Vec<(String, Vec<u8>)> {
     };
     let y = 0.993_948_810_464_696_4;
     let scenes = vec![
-        // The case that certified 0 before the refined direction (a4d46c0).
+        // A quantised variant of the unit test's case (`y` to 16 bits): two
+        // segments 1e-9 apart, which certified 0 before the refined direction.
         Scene {
             name: "tiny-gap-segments",
             a: vec![[-1.0, y, 0.0], [-1.0, -1.0, 0.0], [-1.0, y, 0.0]],
             b: vec![[0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [-1.0, 0.5, 0.0]],
             tail: [2, 2, 0, 0],
+            pose_a: None,
         },
         Scene {
             name: "touching-cubes",
             a: cube(-1.0),
             b: cube(0.0),
             tail: [0, 0, 0, 0],
+            pose_a: None,
         },
         Scene {
             name: "point-in-tetrahedron",
@@ -750,9 +757,10 @@ pub fn gjk_seeds() -> Vec<(String, Vec<u8>)> {
             ],
             b: vec![[0.0, -0.5, -0.5]],
             tail: [0, 0, 0, 1],
+            pose_a: None,
         },
         Scene {
-            name: "parallel-squares-1e-12",
+            name: "square-over-triangle-1e-12",
             a: vec![
                 [-1.0, -1.0, 0.0],
                 [1.0, -1.0, 0.0],
@@ -761,12 +769,30 @@ pub fn gjk_seeds() -> Vec<(String, Vec<u8>)> {
             ],
             b: vec![[-0.5, -0.5, 0.0], [1.0, -0.5, 0.0], [0.5, 1.0, 0.0]],
             tail: [1, 2, 2, 0],
+            pose_a: None,
+        },
+        // A rotated by 30 degrees about z and lifted to touch B's face.
+        Scene {
+            name: "rotated-tetrahedron-on-a-face",
+            a: vec![
+                [0.0, 0.0, 0.0],
+                [0.5, 0.0, 0.5],
+                [0.0, 0.5, 0.5],
+                [-0.5, -0.5, 0.5],
+            ],
+            b: vec![[-1.0, -1.0, 1.0], [1.0, -1.0, 1.0], [0.0, 1.0, 1.0]],
+            tail: [3, 2, 0, 0],
+            pose_a: Some((
+                [[0.866, -0.5, 0.0], [0.5, 0.866, 0.0], [0.0, 0.0, 1.0]],
+                [0.1, -0.2, 0.5],
+            )),
         },
         Scene {
             name: "apart-tiny-scale",
             a: cube(-1.0),
             b: vec![[0.3, 0.2, 0.1], [0.9, 0.1, 0.7]],
             tail: [5, 0, 3, 1],
+            pose_a: None,
         },
     ];
     let grid = |x: f64| -> Option<u8> {
@@ -787,6 +813,16 @@ pub fn gjk_seeds() -> Vec<(String, Vec<u8>)> {
         }
         for t in sc.tail {
             e.u8(t);
+        }
+        if let Some((m, x)) = sc.pose_a {
+            e.u8(1);
+            for &c in m.iter().flatten() {
+                e.value(c, -1.0, 1.0);
+            }
+            for c in x {
+                e.value(c, -2.0, 2.0);
+            }
+            e.u8(0); // B: identity
         }
         out.push((sc.name.to_string(), e.0));
     }
