@@ -10,8 +10,10 @@
 //!   (so both `(b - a) . n >= lower_bound` and `|b - a| >= lower_bound`),
 //!   evaluated in double-double (products exact, sums to about `2^-104` of
 //!   the terms); without a direction the bound is 0. This is the guarantee a
-//!   conservative-advancement step relies on (`proofs/09-ca-toi.md`,
-//!   Lemma 9.1).
+//!   caller's conservative-advancement step taken from `gjk_distance`'s
+//!   bound and direction relies on (`GjkResult`; `proofs/09-ca-toi.md`,
+//!   Lemma 9.1). This crate's `ConvexPair` measures its own certified gap
+//!   along GJK's witness direction instead.
 //! * The bound is at most the distance, and both are 0 when GJK reports an
 //!   intersection.
 //!
@@ -19,7 +21,7 @@
 //! grows with the conditioning of the final simplex (an early version of this
 //! target found a point on an edge of a sliver face 0.003 thin,
 //! converged at a distance of `1.46e-12`, about `6,600 u s`, with bound 0;
-//! `fuzz/README.md`, "Findings"). The certificate is what CA relies on.
+//! `fuzz/README.md`, "Findings"). The certificate is the documented guarantee.
 //!
 //! The input is raw bytes read as bounded numbers (missing bytes read as
 //! zero).
