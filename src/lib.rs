@@ -122,8 +122,12 @@
 //! | `approx` | no | `approx` comparison traits on the public vector types |
 //! | `reference` | no | the exact closed-form oracle ([`reference`](mod@reference)) |
 //! | `faer` | no | batched dense sampling of the oracle with faer ([`reference::sampled`]) |
-//! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks, the time-of-impact ground truth, and an exact triangle intersection test (exact predicates from `robust`); implies `alloc` |
+//! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks, the time-of-impact ground truth, and an exact triangle intersection test written apart from the core's; implies `alloc` |
 //! | `arbitrary` | no | `Arbitrary` case descriptions for `cargo fuzz` |
+//!
+//! The core's one dependency is [`robust`] (Shewchuk's adaptive predicates,
+//! `no_std` and allocation-free): the exact fallback of the filtered
+//! orientation predicates with which [`triangle_triangle`] decides meeting.
 
 #![cfg_attr(not(feature = "std"), no_std)]
 #![forbid(unsafe_code)]

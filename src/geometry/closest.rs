@@ -172,23 +172,27 @@ pub fn point_triangle<T: Float>(p: Vec3<T>, [a, b, c]: [Vec3<T>; 3]) -> ClosestP
 /// so the distance is not below the true distance by more than rounding;
 /// in exact arithmetic it is the true distance. The result is exactly 0 when
 /// the intersection test says the triangles meet and the closest candidate
-/// pair is within `2^10 u s` (`s` the largest absolute coordinate) — the
-/// test's predicates are filtered (Shewchuk's error bounds), so it is exact
-/// whenever their signs are certain or exactly zero (always for
-/// small-integer coordinates and for shared vertices). In configurations
-/// within rounding of a degenerate one the result may be a rounding-level
-/// positive distance for touching triangles, or 0 for triangles a
-/// rounding-level distance apart — but never 0 when the slab between the
-/// corners along the closest pair's direction, or along either triangle's
-/// normal (either way), certainly has a positive width (its computed width
-/// above the rounding of its evaluation). "Rounding-level" scales with the
-/// conditioning of the planes: about `u s / sin(worst angle)` of the
-/// thinner triangle, since a point's distance to a sliver's plane goes
-/// through a normal computed from nearly parallel edges (a touching pair
-/// with a 0.5-degree sliver gave `1850 u s`; `tests/geometry.rs` checks
-/// `2^10 u s / sin`). Conservative advancement does not rely on this
-/// distance for its step (it takes the slab gap of the corners along the
-/// pair's direction, `proofs/09-ca-toi.md`), only to declare contact.
+/// pair is within `2^10 u s` (`s` the largest absolute coordinate). The
+/// test's predicates are filtered (Shewchuk's error bounds) with an exact
+/// fallback ([`robust`]'s adaptive predicates) for any sign the filter
+/// cannot call, so meeting is decided exactly for `f32` input and for `f64`
+/// input whose nonzero coordinates are at least `2^-200` times the largest:
+/// the result is then 0 only for triangles that share a point (or, as for
+/// any rounded distance, when the closest candidate pair rounds to one
+/// point). Triangles that meet may still get a rounding-level positive
+/// distance when their closest candidate is farther than `2^10 u s`.
+/// Outside that range an uncertain sign leans to "meet", but never to a
+/// 0 when the slab between the corners along the closest pair's direction,
+/// or along either triangle's normal (either way), certainly has a positive
+/// width (its computed width above the rounding of its evaluation).
+/// "Rounding-level" scales with the conditioning of the planes: about
+/// `u s / sin(worst angle)` of the thinner triangle, since a point's
+/// distance to a sliver's plane goes through a normal computed from nearly
+/// parallel edges (a touching pair with a 0.5-degree sliver gave
+/// `1850 u s`; `tests/geometry.rs` checks `2^10 u s / sin`). Conservative
+/// advancement does not rely on this distance for its step (it takes the
+/// slab gap of the corners along the pair's direction,
+/// `proofs/09-ca-toi.md`), only to declare contact.
 ///
 /// Degenerate (zero-area) triangles are segments or points and give their
 /// correct distance. Non-finite input gives a NaN distance.

@@ -8,9 +8,10 @@
 //! products: keep coordinates between about `1e-100` and `1e100` in
 //! magnitude, or zero). The crate is small, dependency-free, widely used
 //! (geo, spade) and maintained by the georust organisation; writing expansion
-//! arithmetic here would only duplicate it. It is a dependency of the
-//! `testkit` feature alone: the no_std core uses filtered predicates and
-//! verifies what they conclude (`closest`).
+//! arithmetic here would only duplicate it. The no_std core uses the same
+//! crate as the fallback of its filtered predicates (`predicates`); this
+//! test is written apart from the core's (`intersect`), with its own case
+//! split, so that the two check each other.
 //!
 //! The case split (written apart from the floating-point one, and for exact
 //! signs only):

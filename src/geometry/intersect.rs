@@ -1,4 +1,4 @@
-//! Does a pair of triangles share a point? Decided with filtered predicates.
+//! Does a pair of triangles share a point? Decided with exact signs.
 //!
 //! The decision follows the same case split as the exact test of the
 //! testkit (`geometry::exact`), with signs from
@@ -8,14 +8,18 @@
 //! whose ends lie on edges); segments and points reduce to segment-triangle
 //! and segment-segment tests.
 //!
-//! An uncertain sign is read as zero. When every sign the test uses is
-//! either certain or exactly zero (always so for small-integer coordinates,
-//! and for shared vertices) the answer is exact. Otherwise the configuration
-//! is within rounding of a degenerate one and may be decided either way;
+//! The predicates filter in `T` and fall back to exact arithmetic for any
+//! sign the filter cannot call, so for coordinates that are 0 or within
+//! [`EXACT_RANGE`](super::predicates::EXACT_RANGE) (always so for `f32`;
+//! `closest` rescales its points to a largest coordinate in `[1, 2)`, so for
+//! `f64` every nonzero coordinate must be at least `2^-200` times the largest)
+//! every sign is exact and the answer is exact: the test agrees with the
+//! testkit's on the same inputs. Outside that range a sign may still be "too
+//! close to call", read as zero, and the answer leans to "meet";
 //! `closest` then accepts a "meeting" answer only if it also finds a pair of
 //! points that close, and reports the distance of that pair otherwise.
 
-use super::predicates::{coord, orient2d, orient3d, project};
+use super::predicates::{coord, orient2d, orient3d, points_in_exact_range, project};
 use crate::{Float, Vec3};
 
 /// A triangle after classification.
@@ -44,6 +48,25 @@ fn classify<T: Float>(t: &[Vec3<T>; 3]) -> Shape<T> {
     if t[0] == t[1] && t[0] == t[2] {
         return Shape::Point(t[0]);
     }
+    if points_in_exact_range(t) {
+        // Exactly collinear (every sign above was exact): the extremes
+        // along the line are the lexicographically least and greatest
+        // vertex, compared exactly (as in the testkit's exact test).
+        let lex_less = |p: &Vec3<T>, q: &Vec3<T>| {
+            p.to_array().partial_cmp(&q.to_array()) == Some(core::cmp::Ordering::Less)
+        };
+        let (mut lo, mut hi) = (t[0], t[0]);
+        for p in &t[1..] {
+            if lex_less(p, &lo) {
+                lo = *p;
+            }
+            if lex_less(&hi, p) {
+                hi = *p;
+            }
+        }
+        return Shape::Segment(lo, hi);
+    }
+    // Collinear within rounding only: the longest edge.
     let d01 = t[0].distance_squared(t[1]);
     let d02 = t[0].distance_squared(t[2]);
     let d12 = t[1].distance_squared(t[2]);

@@ -21,7 +21,8 @@ mod scale;
 mod simplex;
 
 /// Hand-made triangle pairs shared by the unit tests of both intersection
-/// tests (`exact` with exact predicates, `intersect` with filtered ones):
+/// tests (`exact`, the testkit's, and `intersect`, the core's filtered ones
+/// with an exact fallback):
 /// every case against [`HAND_MADE_BASE`], with the expected answer.
 #[cfg(test)]
 pub(crate) const HAND_MADE_BASE: [[f64; 3]; 3] =

@@ -1,29 +1,84 @@
-//! Filtered orientation predicates: a sign when it is certain, else zero.
+//! Orientation predicates: a floating-point filter, then an exact fallback.
 //!
-//! Shewchuk's `orient2d` and `orient3d` determinants evaluated once in
+//! Shewchuk's `orient2d` and `orient3d` determinants are evaluated once in
 //! floating point, with his a-priori error bounds (J. R. Shewchuk, "Adaptive
 //! Precision Floating-Point Arithmetic and Fast Robust Geometric Predicates",
 //! Discrete Comput. Geom. 18, 1997,
 //! [doi:10.1007/PL00009321](https://doi.org/10.1007/PL00009321), section 4.2:
 //! `errboundA = (3 + 16u) u` in 2D and `(7 + 56u) u` in 3D, times the
 //! permanent), written in the unit roundoff `u` of `T` and extended by an
-//! absolute allowance for underflow (each product may lose `eta / 2`).
+//! absolute allowance for underflow (each product may lose `eta / 2`). When
+//! the filter cannot call the sign, the inputs are widened to `f64` (exact)
+//! and the sign is decided by the adaptive, exact predicates of the
+//! [`robust`] crate (georust's no_std, allocation-free transcription of the
+//! same paper: expansion arithmetic until the sign is certain).
+//!
+//! Expansion arithmetic is exact only without underflow, so the fallback is
+//! taken only when every coordinate is 0 or of magnitude in
+//! `[2^-200, 2^200]` ([`EXACT_RANGE`]). The callers (`intersect`) pass
+//! points rescaled by [`Scale`](super::scale::Scale) to a largest coordinate
+//! in `[1, 2)`, so this only excludes coordinates below `2^-200` times the
+//! largest one (never for `f32`, whose least subnormal is `2^-149`).
 //!
 //! A sign returned as `+1` or `-1` is the exact sign of the determinant of
-//! the floating-point inputs; `0` means "zero or too close to call". There is
-//! no exact fallback (that needs expansion arithmetic, kept out of the no_std
-//! core): callers treat `0` as "touching", the conservative reading for a
-//! distance, and verify what they conclude from it.
+//! the floating-point inputs. `0` means exactly zero, or, outside the exact
+//! range only, "too close to call"; callers treat `0` as "touching", the
+//! conservative reading for a distance, and verify what they conclude from
+//! it.
 
 use crate::{Float, Vec3};
 
-/// A filtered determinant: its computed value and its certain sign (or 0).
+/// A determinant: an approximation of its value and its exact sign.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Orientation<T> {
-    /// `+1` or `-1` when certain, `0` when zero or uncertain.
+    /// `+1` or `-1`: the exact sign; `0`: exactly zero, or (only for
+    /// coordinates outside [`EXACT_RANGE`]) too close to call.
     pub(crate) sign: i8,
-    /// The computed value (only its sign is certain, and only if `sign != 0`).
+    /// An approximation of the determinant (its magnitude ranks projections;
+    /// rounded to `T`, it may be 0 when `sign` is not).
     pub(crate) value: T,
+}
+
+/// The magnitudes `[2^-200, 2^200]` within which (or at 0) every coordinate
+/// must lie for the exact fallback.
+///
+/// Every such `f64` is a multiple of `2^-252`, so every sum, difference
+/// and product of up to three of them, and every error term Shewchuk's
+/// expansions form from them, is a multiple of `2^-756`: far above the
+/// least normal `2^-1022`, so no step underflows. The largest products
+/// (`2^603` times small factors) are far below overflow, and Dekker's
+/// splitting multiplies by `2^27 + 1`, still in range.
+pub(crate) const EXACT_RANGE: (f64, f64) = (
+    // 2^-200 and 2^200, written as bit patterns (const-evaluable).
+    f64::from_bits((1023 - 200) << 52),
+    f64::from_bits((1023 + 200) << 52),
+);
+
+/// Whether every coordinate is 0 or within [`EXACT_RANGE`].
+fn in_exact_range(coords: &[f64]) -> bool {
+    coords
+        .iter()
+        .all(|&c| c == 0.0 || (EXACT_RANGE.0..=EXACT_RANGE.1).contains(&c.abs()))
+}
+
+/// Whether every coordinate of these points is 0 or within [`EXACT_RANGE`]
+/// (then every sign of [`orient2d`] and [`orient3d`] on them is exact).
+pub(crate) fn points_in_exact_range<T: Float>(points: &[Vec3<T>]) -> bool {
+    points
+        .iter()
+        .all(|p| in_exact_range(&[p.x.to_f64(), p.y.to_f64(), p.z.to_f64()]))
+}
+
+/// The sign of an exact determinant value (robust returns one whose sign is
+/// exact).
+fn sign_of(x: f64) -> i8 {
+    if x > 0.0 {
+        1
+    } else if x < 0.0 {
+        -1
+    } else {
+        0
+    }
 }
 
 fn filtered<T: Float>(det: T, errbound: T) -> Orientation<T> {
@@ -42,6 +97,28 @@ fn filtered<T: Float>(det: T, errbound: T) -> Orientation<T> {
 /// `a, b, c` oriented counterclockwise seen from above (Shewchuk's
 /// convention), i.e. the determinant of the rows `a - d, b - d, c - d`.
 pub(crate) fn orient3d<T: Float>(a: Vec3<T>, b: Vec3<T>, c: Vec3<T>, d: Vec3<T>) -> Orientation<T> {
+    let o = orient3d_filtered(a, b, c, d);
+    if o.sign != 0 {
+        return o;
+    }
+    let [a, b, c, d] = [a, b, c, d].map(|p| [p.x.to_f64(), p.y.to_f64(), p.z.to_f64()]);
+    if !in_exact_range([a, b, c, d].as_flattened()) {
+        return o;
+    }
+    let p = |q: [f64; 3]| robust::Coord3D {
+        x: q[0],
+        y: q[1],
+        z: q[2],
+    };
+    let exact = robust::orient3d(p(a), p(b), p(c), p(d));
+    Orientation {
+        sign: sign_of(exact),
+        value: T::from_f64(exact),
+    }
+}
+
+/// The filter of [`orient3d`] alone.
+fn orient3d_filtered<T: Float>(a: Vec3<T>, b: Vec3<T>, c: Vec3<T>, d: Vec3<T>) -> Orientation<T> {
     let (ad, bd, cd) = (a - d, b - d, c - d);
     let bdxcdy = bd.x * cd.y;
     let cdxbdy = cd.x * bd.y;
@@ -61,6 +138,24 @@ pub(crate) fn orient3d<T: Float>(a: Vec3<T>, b: Vec3<T>, c: Vec3<T>, d: Vec3<T>)
 
 /// `orient2d(a, b, c)`: positive when `a, b, c` turn counterclockwise.
 pub(crate) fn orient2d<T: Float>(a: [T; 2], b: [T; 2], c: [T; 2]) -> Orientation<T> {
+    let o = orient2d_filtered(a, b, c);
+    if o.sign != 0 {
+        return o;
+    }
+    let [a, b, c] = [a, b, c].map(|p| [p[0].to_f64(), p[1].to_f64()]);
+    if !in_exact_range([a, b, c].as_flattened()) {
+        return o;
+    }
+    let p = |q: [f64; 2]| robust::Coord { x: q[0], y: q[1] };
+    let exact = robust::orient2d(p(a), p(b), p(c));
+    Orientation {
+        sign: sign_of(exact),
+        value: T::from_f64(exact),
+    }
+}
+
+/// The filter of [`orient2d`] alone.
+fn orient2d_filtered<T: Float>(a: [T; 2], b: [T; 2], c: [T; 2]) -> Orientation<T> {
     let acx = a[0] - c[0];
     let bcx = b[0] - c[0];
     let acy = a[1] - c[1];
@@ -100,8 +195,53 @@ pub(crate) fn coord<T: Float>(p: Vec3<T>, k: usize) -> T {
 
 #[cfg(test)]
 mod tests {
-    use super::{orient2d, orient3d, project};
+    use super::{orient2d, orient2d_filtered, orient3d, orient3d_filtered, project};
     use crate::Vec3;
+
+    /// Signs the filter cannot call are decided exactly. Expected signs
+    /// from hand analysis: `f64(2/3) = 6004799503160661 / 2^53` lies below
+    /// `2/3`, and `0.5 + 2^-53` is exact.
+    #[test]
+    fn uncertain_signs_fall_back_to_exact() {
+        // The plane z = (x + y) / 3 through a, b, c (counterclockwise from
+        // above); at (1, 1) it is at 2/3, and the nearest f64 is just below.
+        let a = Vec3::new(0.0f64, 0.0, 0.0);
+        let b = Vec3::new(3.0, 0.0, 1.0);
+        let c = Vec3::new(0.0, 3.0, 1.0);
+        let d = Vec3::new(1.0, 1.0, 2.0 / 3.0);
+        // f64(2/3) = 6004799503160661 / 2^53 and 3 * 6004799503160661 =
+        // 2^54 - 1, so f64(2/3) = 2/3 - 1 / (3 2^53).
+        assert_eq!(2.0f64 / 3.0, 6_004_799_503_160_661.0 / 2f64.powi(53));
+        assert_eq!(3 * 6_004_799_503_160_661u64, (1 << 54) - 1);
+        let o = orient3d(a, b, c, d);
+        assert_eq!(o.sign, 1, "just below the plane: {o:?}");
+        assert_eq!(orient3d(b, a, c, d).sign, -1, "swapped orientation");
+        // The filter alone cannot call it, so this exercises the fallback.
+        assert_eq!(orient3d_filtered(a, b, c, d).sign, 0);
+        // f32: the same configuration widened exactly (f32(2/3) is above
+        // 2/3: 11184811 / 2^24).
+        let w = |p: Vec3<f64>| Vec3::new(p.x as f32, p.y as f32, p.z as f32);
+        let d32 = Vec3::new(1.0f32, 1.0, 2.0 / 3.0);
+        // f32(2/3) = 11184811 / 2^24 and 3 * 11184811 = 2^25 + 1.
+        assert_eq!(2.0f32 / 3.0, 11_184_811.0 / 2f32.powi(24));
+        assert_eq!(3 * 11_184_811u32, (1 << 25) + 1);
+        assert_eq!(orient3d(w(a), w(b), w(c), d32).sign, -1, "f32: above");
+        // orient2d: (0.5, 0.5 + 2^-53) is left of the line from (0, 0) to
+        // (1, 1); the computed determinant is 2^-53, below the filter's bound.
+        let up = 0.5 + f64::EPSILON / 2.0;
+        assert_eq!(orient2d_filtered([0.0, 0.0], [1.0, 1.0], [0.5, up]).sign, 0);
+        assert_eq!(orient2d([0.0, 0.0], [1.0, 1.0], [0.5, up]).sign, 1);
+        assert_eq!(orient2d([1.0, 1.0], [0.0, 0.0], [0.5, up]).sign, -1);
+        assert_eq!(
+            orient2d([0.0, 0.0], [1.0, 1.0], [0.5, 0.5]).sign,
+            0,
+            "exactly collinear"
+        );
+        // Outside the exact range (a coordinate of 1e-300 beside ones of
+        // order 1) the fallback is not taken: "too close to call".
+        let tiny = Vec3::new(1e-300, 0.0, 0.0);
+        assert_eq!(orient3d(tiny, b, c, d).sign, 0, "documented guard");
+    }
 
     #[test]
     fn signs_of_simple_configurations() {
