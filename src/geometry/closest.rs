@@ -14,6 +14,7 @@
 //! (never a panic).
 
 use super::intersect::triangles_meet;
+use super::predicates::points_in_exact_range;
 use super::scale::Scale;
 use crate::{Float, Vec3};
 
@@ -175,16 +176,18 @@ pub fn point_triangle<T: Float>(p: Vec3<T>, [a, b, c]: [Vec3<T>; 3]) -> ClosestP
 /// pair is within `2^10 u s` (`s` the largest absolute coordinate). The
 /// test's predicates are filtered (Shewchuk's error bounds) with an exact
 /// fallback ([`robust`]'s adaptive predicates) for any sign the filter
-/// cannot call, so meeting is decided exactly for `f32` input and for `f64`
-/// input whose nonzero coordinates are at least `2^-200` times the largest:
-/// the result is then 0 only for triangles that share a point (or, as for
-/// any rounded distance, when the closest candidate pair rounds to one
-/// point). Triangles that meet may still get a rounding-level positive
-/// distance when their closest candidate is farther than `2^10 u s`.
-/// Outside that range an uncertain sign leans to "meet", but never to a
-/// 0 when the slab between the corners along the closest pair's direction,
-/// or along either triangle's normal (either way), certainly has a positive
-/// width (its computed width above the rounding of its evaluation).
+/// cannot call, so meeting is decided exactly for every finite `f32` input,
+/// and for `f64` input whose coordinates are 0 or of magnitude in
+/// `[2^-200, 2^200]`, or whose nonzero coordinates are at least `2^-200`
+/// times the largest (decided on the exactly rescaled copy). Then a pair
+/// that does not meet is reported at 0 only when its closest candidate pair
+/// rounds to one point (a sub-ulp gap). Triangles that meet may still get a
+/// rounding-level positive distance when their closest candidate is farther
+/// than `2^10 u s`. Outside that range an uncertain sign leans to "meet",
+/// but never to a 0 when the slab between the corners along the closest
+/// pair's direction, or along either triangle's normal (either way),
+/// certainly has a positive width (its computed width above the rounding of
+/// its evaluation).
 /// "Rounding-level" scales with the conditioning of the planes: about
 /// `u s / sin(worst angle)` of the thinner triangle, since a point's
 /// distance to a sliver's plane goes through a normal computed from nearly
@@ -216,8 +219,18 @@ pub fn triangle_triangle<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3]) -> Closes
         return ClosestPoints::non_finite(a[0], b[0]);
     }
     let s = Scale::for_points(&[a[0], a[1], a[2], b[0], b[1], b[2]]);
+    // Meeting is decided on the caller's coordinates when the predicates
+    // are exact on them (always for `f32`: rescaling could round its small
+    // coordinates into the subnormal range), else on the rescaled ones
+    // (exact rescaling whenever those are in the exact range).
+    let (a0, b0) = (*a, *b);
     let a = a.map(|p| s.apply(p));
     let b = b.map(|p| s.apply(p));
+    let (meet_a, meet_b) = if points_in_exact_range(&[a0[0], a0[1], a0[2], b0[0], b0[1], b0[2]]) {
+        (a0, b0)
+    } else {
+        (a, b)
+    };
     let mut best = Best::new();
     for i in 0..3 {
         best.offer(a[i], closest_on_triangle(a[i], b[0], b[1], b[2]));
@@ -242,7 +255,7 @@ pub fn triangle_triangle<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3]) -> Closes
     if best.d2 > T::ZERO
         && best.d2 <= tol * tol
         && !certainly_apart(&a, &b, y - x, m)
-        && triangles_meet(&a, &b)
+        && triangles_meet(&meet_a, &meet_b)
     {
         let mid = x.lerp(y, T::HALF);
         (x, y) = (mid, mid);

@@ -9,9 +9,9 @@
 //! magnitude, or zero). The crate is small, dependency-free, widely used
 //! (geo, spade) and maintained by the georust organisation; writing expansion
 //! arithmetic here would only duplicate it. The no_std core uses the same
-//! crate as the fallback of its filtered predicates (`predicates`); this
-//! test is written apart from the core's (`intersect`), with its own case
-//! split, so that the two check each other.
+//! crate as the fallback of its filtered predicates (`predicates`), so the
+//! two tests cross-check their case splits, not their signs; the signs are
+//! checked against `i128` determinants (`predicates`' unit tests).
 //!
 //! The case split (written apart from the floating-point one, and for exact
 //! signs only):

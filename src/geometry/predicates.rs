@@ -13,12 +13,15 @@
 //! [`robust`] crate (georust's no_std, allocation-free transcription of the
 //! same paper: expansion arithmetic until the sign is certain).
 //!
-//! Expansion arithmetic is exact only without underflow, so the fallback is
-//! taken only when every coordinate is 0 or of magnitude in
-//! `[2^-200, 2^200]` ([`EXACT_RANGE`]). The callers (`intersect`) pass
-//! points rescaled by [`Scale`](super::scale::Scale) to a largest coordinate
-//! in `[1, 2)`, so this only excludes coordinates below `2^-200` times the
-//! largest one (never for `f32`, whose least subnormal is `2^-149`).
+//! Expansion arithmetic is exact only without underflow or overflow (and
+//! with IEEE binary64 round-to-nearest-even arithmetic, no extended
+//! precision: not x87), so the fallback is taken only when every coordinate
+//! is 0 or of magnitude in `[2^-200, 2^200]` ([`EXACT_RANGE`]). Every finite
+//! `f32` is (its least subnormal is `2^-149`). `closest` passes the caller's
+//! points when they are in the range and else points rescaled exactly by
+//! a power of two to a largest coordinate in `[1, 2)`, so for `f64` only
+//! nonzero coordinates below `2^-200` times the largest are excluded. The
+//! slowest path keeps about 5 KB of expansions on the stack (no heap).
 //!
 //! A sign returned as `+1` or `-1` is the exact sign of the determinant of
 //! the floating-point inputs. `0` means exactly zero, or, outside the exact
@@ -40,14 +43,15 @@ pub(crate) struct Orientation<T> {
 }
 
 /// The magnitudes `[2^-200, 2^200]` within which (or at 0) every coordinate
-/// must lie for the exact fallback.
+/// must lie for the exact fallback (`proofs/floating-point.md`, Lemma FP-M).
 ///
-/// Every such `f64` is a multiple of `2^-252`, so every sum, difference
-/// and product of up to three of them, and every error term Shewchuk's
-/// expansions form from them, is a multiple of `2^-756`: far above the
-/// least normal `2^-1022`, so no step underflows. The largest products
-/// (`2^603` times small factors) are far below overflow, and Dekker's
-/// splitting multiplies by `2^27 + 1`, still in range.
+/// Every such `f64` is a multiple of `2^-252`, and rounding a multiple of
+/// `2^-m` to `f64` gives one again, so every component of Shewchuk's
+/// expansions (sums, differences, Dekker's split parts, products of up to
+/// three factors and their error terms) is a multiple of `2^-756`, and his
+/// error bounds are small constants times such values (at least about
+/// `2^-860`): far above the least normal `2^-1022`, so no step underflows.
+/// The largest values stay below about `2^606`: no overflow.
 pub(crate) const EXACT_RANGE: (f64, f64) = (
     // 2^-200 and 2^200, written as bit patterns (const-evaluable).
     f64::from_bits((1023 - 200) << 52),
@@ -225,6 +229,7 @@ mod tests {
         // f32(2/3) = 11184811 / 2^24 and 3 * 11184811 = 2^25 + 1.
         assert_eq!(2.0f32 / 3.0, 11_184_811.0 / 2f32.powi(24));
         assert_eq!(3 * 11_184_811u32, (1 << 25) + 1);
+        assert_eq!(orient3d_filtered(w(a), w(b), w(c), d32).sign, 0);
         assert_eq!(orient3d(w(a), w(b), w(c), d32).sign, -1, "f32: above");
         // orient2d: (0.5, 0.5 + 2^-53) is left of the line from (0, 0) to
         // (1, 1); the computed determinant is 2^-53, below the filter's bound.
@@ -280,6 +285,108 @@ mod tests {
             orient2d(project(a, 2), project(b, 2), project(c, 2)).sign,
             1,
             "the dropped-axis orientation is the normal's component"
+        );
+    }
+}
+
+/// The signs against exact integer arithmetic (`i128`), independent of the
+/// `robust` crate: near-degenerate integer configurations (exactly
+/// coplanar or collinear, then moved by one unit) whose determinants the
+/// filter cannot call, scaled by powers of two across the exact range.
+#[cfg(test)]
+mod exact_arithmetic {
+    use super::{orient2d, orient2d_filtered, orient3d, orient3d_filtered};
+    use crate::Vec3;
+    use proptest::prelude::*;
+
+    type I3 = [i64; 3];
+
+    fn det3(a: I3, b: I3, c: I3, d: I3) -> i128 {
+        let r = |p: I3| [0, 1, 2].map(|k| i128::from(p[k]) - i128::from(d[k]));
+        let (x, y, z) = (r(a), r(b), r(c));
+        x[2] * (y[0] * z[1] - z[0] * y[1])
+            + y[2] * (z[0] * x[1] - x[0] * z[1])
+            + z[2] * (x[0] * y[1] - y[0] * x[1])
+    }
+
+    fn sign(x: i128) -> i8 {
+        x.signum() as i8
+    }
+
+    /// `a + s (b - a) + t (c - a) + nudge` (exactly coplanar without the
+    /// nudge), `|a| <= 2^la`, `|b - a|, |c - a| <= 2^le`, `|s|, |t| <= 2^ls`.
+    fn near_plane(la: u32, le: u32, ls: u32) -> impl Strategy<Value = (I3, I3, I3, I3)> {
+        let p = |m: i64| [-m..=m, -m..=m, -m..=m];
+        (
+            p(1 << la),
+            p(1 << le),
+            p(1 << le),
+            (-(1i64 << ls)..=1 << ls, -(1i64 << ls)..=1 << ls),
+            (0usize..3, -1i64..=1),
+        )
+            .prop_map(|(a, e, f, (s, t), (k, nudge))| {
+                let b = [0, 1, 2].map(|i| a[i] + e[i]);
+                let c = [0, 1, 2].map(|i| a[i] + f[i]);
+                let mut d = [0, 1, 2].map(|i| a[i] + s * e[i] + t * f[i]);
+                d[k] += nudge;
+                (a, b, c, d)
+            })
+    }
+
+    proptest! {
+        #[test]
+        fn orient3d_has_the_exact_sign((a, b, c, d) in near_plane(38, 18, 18), k in prop_oneof![Just(0i32), Just(-60), Just(-150), Just(-190), Just(150)]) {
+            let want = sign(det3(a, b, c, d));
+            let scale = 2f64.powi(k);
+            // Exact: integers below 2^53, scaled by a power of two within range.
+            let v = |p: I3| Vec3::new(p[0] as f64 * scale, p[1] as f64 * scale, p[2] as f64 * scale);
+            let got = orient3d(v(a), v(b), v(c), v(d));
+            prop_assert_eq!(got.sign, want, "det {}", det3(a, b, c, d));
+            let filtered = orient3d_filtered(v(a), v(b), v(c), v(d)).sign;
+            prop_assert!(filtered == 0 || filtered == want, "the filter is never wrong");
+        }
+
+        #[test]
+        fn orient3d_has_the_exact_sign_in_f32((a, b, c, d) in near_plane(22, 9, 9)) {
+            // Coordinates below 2^23: exact in f32.
+            let v = |p: I3| Vec3::new(p[0] as f32, p[1] as f32, p[2] as f32);
+            prop_assert_eq!(orient3d(v(a), v(b), v(c), v(d)).sign, sign(det3(a, b, c, d)));
+        }
+
+        #[test]
+        fn orient2d_has_the_exact_sign(a in [-(1i64 << 50)..=1 << 50, -(1i64 << 50)..=1 << 50], e in [-(1i64 << 25)..=1 << 25, -(1i64 << 25)..=1 << 25], s in -(1i64 << 25)..=1 << 25, nudge in -1i64..=1, k in prop_oneof![Just(0i32), Just(-150), Just(140)]) {
+            let b = [a[0] + e[0], a[1] + e[1]];
+            let c = [a[0] + s * e[0], a[1] + s * e[1] + nudge];
+            let det = (i128::from(a[0]) - i128::from(c[0])) * (i128::from(b[1]) - i128::from(c[1]))
+                - (i128::from(a[1]) - i128::from(c[1])) * (i128::from(b[0]) - i128::from(c[0]));
+            let scale = 2f64.powi(k);
+            let v = |p: [i64; 2]| [p[0] as f64 * scale, p[1] as f64 * scale];
+            prop_assert_eq!(orient2d(v(a), v(b), v(c)).sign, sign(det));
+            let filtered = orient2d_filtered(v(a), v(b), v(c)).sign;
+            prop_assert!(filtered == 0 || filtered == sign(det), "the filter is never wrong");
+        }
+    }
+
+    /// The near-plane family does exercise the fallback (else the tests
+    /// above would only check the filter).
+    #[test]
+    fn the_family_reaches_the_fallback() {
+        let a = [1i64 << 38, -(1 << 37), 12345];
+        let (e, f) = ([1i64 << 18, 3, -7], [5, -(1i64 << 18), 11]);
+        let b = [0, 1, 2].map(|i| a[i] + e[i]);
+        let c = [0, 1, 2].map(|i| a[i] + f[i]);
+        let mut d = [0, 1, 2].map(|i| a[i] + 100_000 * e[i] - 99_999 * f[i]);
+        d[2] += 1;
+        let v = |p: I3| Vec3::new(p[0] as f64, p[1] as f64, p[2] as f64);
+        assert_ne!(det3(a, b, c, d), 0, "nudged off the plane");
+        assert_eq!(
+            orient3d_filtered(v(a), v(b), v(c), v(d)).sign,
+            0,
+            "filter undecided"
+        );
+        assert_eq!(
+            orient3d(v(a), v(b), v(c), v(d)).sign,
+            sign(det3(a, b, c, d))
         );
     }
 }
