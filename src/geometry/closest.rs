@@ -219,18 +219,9 @@ pub fn triangle_triangle<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3]) -> Closes
         return ClosestPoints::non_finite(a[0], b[0]);
     }
     let s = Scale::for_points(&[a[0], a[1], a[2], b[0], b[1], b[2]]);
-    // Meeting is decided on the caller's coordinates when the predicates
-    // are exact on them (always for `f32`: rescaling could round its small
-    // coordinates into the subnormal range), else on the rescaled ones
-    // (exact rescaling whenever those are in the exact range).
     let (a0, b0) = (*a, *b);
     let a = a.map(|p| s.apply(p));
     let b = b.map(|p| s.apply(p));
-    let (meet_a, meet_b) = if points_in_exact_range(&[a0[0], a0[1], a0[2], b0[0], b0[1], b0[2]]) {
-        (a0, b0)
-    } else {
-        (a, b)
-    };
     let mut best = Best::new();
     for i in 0..3 {
         best.offer(a[i], closest_on_triangle(a[i], b[0], b[1], b[2]));
@@ -255,12 +246,31 @@ pub fn triangle_triangle<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3]) -> Closes
     if best.d2 > T::ZERO
         && best.d2 <= tol * tol
         && !certainly_apart(&a, &b, y - x, m)
-        && triangles_meet(&meet_a, &meet_b)
+        && meet(&a0, &b0, &a, &b)
     {
         let mid = x.lerp(y, T::HALF);
         (x, y) = (mid, mid);
     }
     ClosestPoints::from_scaled(&s, x, y)
+}
+
+/// Whether the triangles meet (given as the caller passed them, and
+/// rescaled). Decided on the caller's coordinates when the predicates are
+/// exact on them (always for `f32`: rescaling could round its small
+/// coordinates into the subnormal range), else on the rescaled ones (exact
+/// rescaling whenever those are in the exact range). Only evaluated near
+/// contact, before a snap to 0.
+fn meet<T: Float>(
+    a0: &[Vec3<T>; 3],
+    b0: &[Vec3<T>; 3],
+    a: &[Vec3<T>; 3],
+    b: &[Vec3<T>; 3],
+) -> bool {
+    if points_in_exact_range(&[a0[0], a0[1], a0[2], b0[0], b0[1], b0[2]]) {
+        triangles_meet(a0, b0)
+    } else {
+        triangles_meet(a, b)
+    }
 }
 
 /// Whether a slab certainly separates the triangles: along `closest` (the
