@@ -219,7 +219,7 @@ pub fn triangle_triangle<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3]) -> Closes
         return ClosestPoints::non_finite(a[0], b[0]);
     }
     let s = Scale::for_points(&[a[0], a[1], a[2], b[0], b[1], b[2]]);
-    let (a0, b0) = (*a, *b);
+    let (a0, b0) = (a, b);
     let a = a.map(|p| s.apply(p));
     let b = b.map(|p| s.apply(p));
     let mut best = Best::new();
@@ -246,7 +246,7 @@ pub fn triangle_triangle<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3]) -> Closes
     if best.d2 > T::ZERO
         && best.d2 <= tol * tol
         && !certainly_apart(&a, &b, y - x, m)
-        && meet(&a0, &b0, &a, &b)
+        && meet(a0, b0, &a, &b)
     {
         let mid = x.lerp(y, T::HALF);
         (x, y) = (mid, mid);
