@@ -53,7 +53,8 @@ use motion_bound::scenes::TorusKnotSize;
 #[path = "support/knot_queries.rs"]
 mod knot_queries;
 
-use knot_queries::{label, mapping_error, parry_meshes, parry_toi, KnotScene, SPIN};
+use knot_queries::{mapping_error, parry_meshes, parry_toi};
+use motion_bound::testkit::table1::{label, KnotScene, SPIN};
 
 /// Queries in each size's list.
 const QUERIES: usize = 200;
@@ -108,7 +109,7 @@ fn bench_size(c: &mut Criterion, size: TorusKnotSize, parry_per_triangle: &mut O
                 b.iter(|| {
                     let q = &list[k % list.len()];
                     k += 1;
-                    scene.ours(black_box(q), &params).0
+                    scene.run(black_box(q), &params).0
                 });
             });
         }

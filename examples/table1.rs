@@ -52,9 +52,9 @@ use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
 #[path = "../benches/support/knot_queries.rs"]
 mod knot_queries;
 
-use knot_queries::{
-    label, mapping_error, parry_meshes, parry_toi, KnotScene, ParryAnswer, Query, CONTACT_DISTANCE,
-    ORIENTATIONS, SPIN,
+use knot_queries::{mapping_error, parry_meshes, parry_toi, ParryAnswer};
+use motion_bound::testkit::table1::{
+    label, KnotScene, Query, CONTACT_DISTANCE, ORIENTATIONS, SPIN,
 };
 
 /// A reported contact later than the first sampled contact by more than this
@@ -143,22 +143,32 @@ struct Run {
     contacts: usize,
     initial: usize,
     by_time_tolerance: usize,
+    /// Contacts by time tolerance declared within `1e-9` of the interval's
+    /// end (none should be: near the end a short step is no stall).
+    tolerance_at_end: usize,
+    /// The indices of the queries certified separated.
+    separated: Vec<usize>,
     iteration_limit: usize,
     stats: TraversalStats,
 }
 
 impl Run {
     fn record(&mut self, ms: f64, outcome: &CaOutcome<f64>, iterations: u32, s: TraversalStats) {
+        let index = self.times_ms.len();
         self.times_ms.push(ms);
         self.iterations += u64::from(iterations);
         self.earliest.push(outcome.earliest_possible_contact());
         match outcome {
-            CaOutcome::Contact { criterion, .. } => {
+            CaOutcome::Contact { criterion, contact } => {
                 self.contacts += 1;
                 if *criterion == ContactCriterion::TimeTolerance {
                     self.by_time_tolerance += 1;
+                    if contact.time >= 1.0 - 1e-9 {
+                        self.tolerance_at_end += 1;
+                    }
                 }
             }
+            CaOutcome::Separated => self.separated.push(index),
             CaOutcome::InitialContact(_) => {
                 self.contacts += 1;
                 self.initial += 1;
@@ -315,7 +325,7 @@ fn run_size(args: &Args, size: TorusKnotSize, parry_per_triangle: &mut Option<f6
     );
     let pa = pe.with_one_sided(false).with_horizon_factor(0.0);
     for q in scene.queries.iter().take(ORIENTATIONS) {
-        std::hint::black_box((scene.ours(q, &pn), scene.ours(q, &pe), scene.ours(q, &pa)));
+        std::hint::black_box((scene.run(q, &pn), scene.run(q, &pe), scene.run(q, &pa)));
     }
     let (mut nevq, mut evq, mut evq_abs) = (Run::default(), Run::default(), Run::default());
     for (i, q) in scene.queries.iter().enumerate() {
@@ -324,7 +334,7 @@ fn run_size(args: &Args, size: TorusKnotSize, parry_per_triangle: &mut Option<f6
         order.rotate_left(i % 3);
         for (run, params) in order {
             let start = Instant::now();
-            let (report, stats) = scene.ours(q, params);
+            let (report, stats) = scene.run(q, params);
             let ms = start.elapsed().as_secs_f64() * 1e3;
             run.record(ms, &report.outcome, report.iterations, stats);
         }
@@ -373,13 +383,18 @@ fn run_size(args: &Args, size: TorusKnotSize, parry_per_triangle: &mut Option<f6
     );
     for (name, r) in [("NEVQ", &nevq), ("EVQ", &evq)] {
         println!(
-            "   {name:<5} outcomes: {} contacts ({} initial, {} by time tolerance), {} separated, {} iteration limit",
+            "   {name:<5} outcomes: {} contacts ({} initial, {} by time tolerance, {} of them within 1e-9 of the end), {} separated, {} iteration limit",
             r.contacts,
             r.initial,
             r.by_time_tolerance,
-            n - r.contacts - r.iteration_limit,
+            r.tolerance_at_end,
+            r.separated.len(),
             r.iteration_limit
         );
+        if !r.separated.is_empty() {
+            let list: Vec<String> = r.separated.iter().map(usize::to_string).collect();
+            println!("         separated queries: {}", list.join(", "));
+        }
     }
     println!(
         "   EVQ/NEVQ time: mean {:.3}, median {:.3} (seed: {:.3}); iterations EVQ/NEVQ {:.3} (seed: {:.3})",

@@ -49,16 +49,40 @@ impl<T: Float> DirectedBound<T> {
         }
     }
 
-    /// The conservative-advancement time step `d / speed` for a gap `d >= 0`:
-    /// no body point can travel `d` along `n` in less time. `+inf` when the
-    /// bound is zero (nothing moves along `n`).
+    /// The conservative-advancement time step `d / speed` for a gap `d`: no
+    /// body point can travel `d` along `n` in less time.
+    ///
+    /// * `0` for a gap that is not positive, or NaN: no step is safe (a
+    ///   negative time is never returned);
+    /// * `+inf` for a positive gap when the bound is zero (nothing moves along
+    ///   `n`), or for an infinite gap;
+    /// * otherwise the quotient, rounded to nearest (for a step certified in
+    ///   floating point, see [`ca::gap_step`](crate::ca::gap_step)).
+    ///
+    /// ```
+    /// use motion_bound::DirectedBound;
+    /// let b = DirectedBound { speed: 2.0, displacement: 2.0 };
+    /// assert_eq!(b.time_to_close(1.0), 0.5);
+    /// assert_eq!(b.time_to_close(-3.0), 0.0);
+    /// assert_eq!(b.time_to_close(f64::NAN), 0.0);
+    /// let still = DirectedBound { speed: 0.0, displacement: 0.0 };
+    /// assert_eq!(still.time_to_close(1.0), f64::INFINITY);
+    /// assert_eq!(still.time_to_close(-1.0), 0.0);
+    /// ```
     #[inline]
     #[must_use]
     pub fn time_to_close(&self, gap: T) -> T {
-        if self.speed == T::ZERO {
+        if gap.is_nan() || gap <= T::ZERO {
+            T::ZERO
+        } else if self.speed == T::ZERO {
             T::INFINITY
         } else {
-            gap / self.speed
+            let s = gap / self.speed;
+            if s.is_nan() || s < T::ZERO {
+                T::ZERO
+            } else {
+                s
+            }
         }
     }
 }

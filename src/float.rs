@@ -97,6 +97,9 @@ pub trait Float:
     /// The largest representable value below `self` (IEEE `nextDown`; NaN
     /// stays NaN, `-inf` stays `-inf`).
     fn next_down(self) -> Self;
+    /// The least representable value above `self` (IEEE `nextUp`; NaN stays
+    /// NaN, `+inf` stays `+inf`).
+    fn next_up(self) -> Self;
 
     /// The larger of two numbers; NaN if either is NaN (unlike `f64::max`,
     /// which would silently drop a NaN and could hide an unsound value).
@@ -169,6 +172,10 @@ macro_rules! impl_float {
             #[inline]
             fn next_down(self) -> Self {
                 $t::next_down(self)
+            }
+            #[inline]
+            fn next_up(self) -> Self {
+                $t::next_up(self)
             }
 
             #[cfg(feature = "std")]

@@ -232,14 +232,16 @@ pub(crate) fn gap_down<T: Float>(gap: T, pose_err_a: T, pose_err_b: T, reach_sum
     }
 }
 
-/// Section "Step": a time step no longer than `gap / (mu_a + mu_b)`, the
-/// longest step over which points moving along `n` at speeds at most `mu_a`
-/// and `mu_b` cannot close the gap: `fl(fl(gap / fl((mu_a + mu_b)(1 + gamma_2))) (1 - gamma_2))`.
+/// Section "Step": a time step no longer than `(gap - clearance) / (mu_a + mu_b)`,
+/// the longest step over which points moving along `n` at speeds at most
+/// `mu_a` and `mu_b` cannot close a gap `gap` to `clearance`:
+/// `fl(fl(fl(gap - clearance) / fl((mu_a + mu_b)(1 + gamma_2))) (1 - gamma_3))`.
 /// `+inf` when nothing closes (`mu_a + mu_b <= 0`: one-sided rates may be
-/// negative); `0` for a non-positive gap or a NaN.
+/// negative); `0` when the gap is at most the clearance, or for a NaN.
 #[inline]
 #[must_use]
-pub(crate) fn step_down<T: Float>(gap: T, mu_a: T, mu_b: T) -> T {
+pub(crate) fn step_down<T: Float>(gap: T, clearance: T, mu_a: T, mu_b: T) -> T {
+    let gap = gap - clearance;
     if gap.is_nan() || gap <= T::ZERO {
         return T::ZERO;
     }
@@ -252,7 +254,7 @@ pub(crate) fn step_down<T: Float>(gap: T, mu_a: T, mu_b: T) -> T {
     if mu <= T::ZERO {
         return T::INFINITY;
     }
-    let s = gap / mu * (T::ONE - gamma::<T>(2));
+    let s = gap / mu * (T::ONE - gamma::<T>(3));
     if s.is_nan() {
         T::ZERO
     } else {
@@ -260,12 +262,74 @@ pub(crate) fn step_down<T: Float>(gap: T, mu_a: T, mu_b: T) -> T {
     }
 }
 
-/// Section "Step": `t' <= t + step` exactly: the rounded sum, moved down by
-/// one ulp (round to nearest errs by at most half an ulp of the result).
+/// Section "Exact sums": Knuth's TwoSum, `a + b = hi + lo` exactly with
+/// `hi = fl(a + b)`, for finite `a`, `b` whose rounded sum is finite (six
+/// additions, no branch; exact also in the subnormal range, where additions
+/// are exact).
+#[inline]
+#[must_use]
+pub(crate) fn two_sum<T: Float>(a: T, b: T) -> (T, T) {
+    let hi = a + b;
+    let bb = hi - a;
+    let lo = (a - (hi - bb)) + (b - bb);
+    (hi, lo)
+}
+
+/// Section "Exact sums": whether `t + step >= end` holds in exact arithmetic
+/// (`t`, `end` finite; `step >= 0` or `+inf`; NaN is `false`). This is how
+/// the driver decides that a certified step reaches the interval's end.
+#[inline]
+#[must_use]
+pub(crate) fn sum_reaches<T: Float>(t: T, step: T, end: T) -> bool {
+    if step.is_nan() {
+        return false;
+    }
+    let (hi, lo) = two_sum(t, step);
+    // An overflowed sum (or `step = +inf`) exceeds every finite `end`.
+    if !hi.is_finite() {
+        return hi > T::ZERO;
+    }
+    hi > end || (hi == end && lo >= T::ZERO)
+}
+
+/// Section "Exact sums": the largest float at most `t + step` in exact
+/// arithmetic (`t` finite, `step >= 0` finite with a finite sum): the rounded
+/// sum, moved down one ulp only when rounding went up.
 #[inline]
 #[must_use]
 pub(crate) fn advance_down<T: Float>(t: T, step: T) -> T {
-    (t + step).next_down()
+    let (hi, lo) = two_sum(t, step);
+    if lo < T::ZERO {
+        hi.next_down()
+    } else {
+        hi
+    }
+}
+
+/// Section "Exact sums": a float at least `end - t` in exact arithmetic (the
+/// rounded difference, moved up one ulp only when rounding went down), for
+/// finite `end >= t`.
+#[inline]
+#[must_use]
+pub(crate) fn diff_up<T: Float>(end: T, t: T) -> T {
+    let (hi, lo) = two_sum(end, -t);
+    if lo > T::ZERO {
+        hi.next_up()
+    } else {
+        hi
+    }
+}
+
+/// Section "Exact sums": a float at most `end - t` in exact arithmetic.
+#[inline]
+#[must_use]
+pub(crate) fn diff_down<T: Float>(end: T, t: T) -> T {
+    let (hi, lo) = two_sum(end, -t);
+    if lo < T::ZERO {
+        hi.next_down()
+    } else {
+        hi
+    }
 }
 
 #[cfg(test)]

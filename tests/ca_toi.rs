@@ -9,8 +9,8 @@
 //! `CA_TOI_QUERIES` to run more queries per scene.
 
 use motion_bound::ca::{
-    time_of_impact, BallPair, BoundChoice, CaOutcome, CaParams, CaReport, CaStep, ConvexPair,
-    MeshPair, StepResult,
+    time_of_impact, BallPair, BoundChoice, CaOutcome, CaParams, CaReport, CaStep, ContactCriterion,
+    ConvexPair, MeshPair, StepResult,
 };
 use motion_bound::scenes::{board, icosphere, torus, TorusKnot};
 use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
@@ -32,6 +32,9 @@ struct Tally {
     queries: usize,
     sampled_contacts: usize,
     ca_contacts: usize,
+    /// Of the contacts, those declared by time tolerance (a stall).
+    ca_stalls: usize,
+    separated: usize,
     iterations: u64,
     violations: Vec<String>,
 }
@@ -50,6 +53,22 @@ impl Tally {
         self.sampled_contacts += usize::from(truth.is_some());
         let reported = report.outcome.earliest_possible_contact().map(T::to_f64);
         self.ca_contacts += usize::from(report.outcome.contact().is_some());
+        match report.outcome {
+            CaOutcome::Separated => self.separated += 1,
+            CaOutcome::Contact {
+                contact,
+                criterion: ContactCriterion::TimeTolerance,
+            } => {
+                self.ca_stalls += 1;
+                // A stall leaves at least the time tolerance before the end.
+                if contact.time.to_f64() + 1e-9 >= 1.0 {
+                    self.violations.push(format!(
+                        "{what}: a contact by time tolerance within the tolerance of the end: {report:?}"
+                    ));
+                }
+            }
+            _ => {}
+        }
         match (reported, truth) {
             (None, Some(g)) => self
                 .violations
@@ -63,10 +82,12 @@ impl Tally {
 
     fn assert_clean(&self, scene: &str) {
         println!(
-            "{scene}: {} queries, {} sampled contacts, {} CA contacts, {} near misses, {:.2} iterations per query, {} violations",
+            "{scene}: {} queries, {} sampled contacts, {} CA contacts ({} by time tolerance), {} CA separated, {} sampled without contact, {:.2} iterations per query, {} violations",
             self.queries,
             self.sampled_contacts,
             self.ca_contacts,
+            self.ca_stalls,
+            self.separated,
             self.queries - self.sampled_contacts,
             self.iterations as f64 / self.queries.max(1) as f64,
             self.violations.len()

@@ -11,6 +11,8 @@
 //!   (`testkit::ground_truth::first_sampled_contact`: its own quaternion
 //!   placement and exact orientation predicates), and `Separated` is never
 //!   reported when sampling finds an intersection (`proofs/09-ca-toi.md`).
+//! * A contact by time tolerance (a stall) is at least the tolerance before
+//!   the interval's end (near the end short steps are no stall).
 //!
 //! The input is raw bytes read as bounded numbers (missing bytes read as
 //! zero): vertices in `[-1, 1]^3`, centres within 3 of the origin, speeds up
@@ -19,7 +21,9 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use motion_bound::ca::{time_of_impact, BoundChoice, CaParams, MeshPair};
+use motion_bound::ca::{
+    time_of_impact, BoundChoice, CaOutcome, CaParams, ContactCriterion, MeshPair,
+};
 use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
 use motion_bound::{BallTree, RigidMotion};
 use motion_bound_fuzz::Bytes;
@@ -94,6 +98,19 @@ fn run(data: &[u8]) {
         (0.0, 1.0),
         SAMPLES,
     );
+    // A stall (a contact by time tolerance) leaves at least the tolerance
+    // before the end; `Separated` is checked against the sampled truth below.
+    if let CaOutcome::Contact {
+        contact,
+        criterion: ContactCriterion::TimeTolerance,
+    } = report.outcome
+    {
+        assert!(
+            contact.time + params.time_tolerance < 1.0,
+            "STALL AT THE END: a contact by time tolerance at {} ({report:?})",
+            contact.time
+        );
+    }
     let reported = report.outcome.earliest_possible_contact();
     if let Some(g) = truth {
         match reported {

@@ -79,8 +79,6 @@ pub trait Precision: Float + for<'a> Arbitrary<'a> {
     const NAN: Self;
     /// Relative precision of [`Self::R`] (a safe upper bound of its unit roundoff).
     const R_EPS: f64;
-    /// The next representable value towards `+inf`.
-    fn next_up(self) -> Self;
 }
 
 impl Precision for f32 {
@@ -90,9 +88,6 @@ impl Precision for f32 {
     const MIN_POSITIVE: Self = f32::MIN_POSITIVE;
     const NAN: Self = f32::NAN;
     const R_EPS: f64 = f64::EPSILON;
-    fn next_up(self) -> Self {
-        f32::next_up(self)
-    }
 }
 
 impl Precision for f64 {
@@ -102,9 +97,6 @@ impl Precision for f64 {
     const MIN_POSITIVE: Self = f64::MIN_POSITIVE;
     const NAN: Self = f64::NAN;
     const R_EPS: f64 = 1.0 / (1u128 << 100) as f64;
-    fn next_up(self) -> Self {
-        f64::next_up(self)
-    }
 }
 
 /// Exact widening of a bound-precision value to the oracle precision.

@@ -75,7 +75,7 @@ impl<T: Float> CaStep<T> for BallPair<T> {
         };
         // Along n the balls span [ca.n - ra, ca.n + ra] and [cb.n - rb, cb.n + rb].
         let gap = d.dot(nv) - ra - rb;
-        let (step, _) = gap_step(gap, (ea, eb), (pa, pb), (mu_a, mu_b));
+        let (step, _) = gap_step(gap, params.clearance(), (ea, eb), (pa, pb), (mu_a, mu_b));
         StepResult::Advance {
             step,
             witness: Some(witness),

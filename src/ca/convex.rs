@@ -2,6 +2,7 @@
 
 use crate::ca::driver::{gap_step, placement_error};
 use crate::ca::{BoundChoice, CaParams, CaStep, StepResult, Witness};
+use crate::rounding::diff_up;
 use crate::{BoundKind, Direction, Float, Pose, PreparedMotion, Vec3, VertexSet};
 
 /// A distance oracle for a pair of bodies: what another engine plugs in.
@@ -135,14 +136,15 @@ impl<T: Float, P: Proximity<T>> CaStep<T> for ConvexPair<'_, T, P> {
             } else {
                 (pa.speed(&self.a, kind), pb.speed(&self.b, kind))
             };
-            gap_step(gap, (ea, eb), (ra, rb), mu).0
+            gap_step(gap, params.clearance(), (ea, eb), (ra, rb), mu).0
         };
         let step = match params.bound {
             BoundChoice::Nevq => step_with(BoundKind::Nevq),
             BoundChoice::Evq => step_with(BoundKind::Evq),
             BoundChoice::Auto => {
                 let cheap = step_with(BoundKind::Nevq);
-                if cheap >= a.motion().interval().end() - t {
+                // NEVQ's step already reaches the end of the bounds' interval.
+                if cheap >= diff_up(a.motion().interval().end(), t) {
                     cheap
                 } else {
                     cheap.max_nan(step_with(BoundKind::Evq))

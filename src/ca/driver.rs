@@ -1,7 +1,7 @@
 //! The conservative-advancement loop.
 
 use crate::ca::{CaError, CaOutcome, CaParams, CaReport, Contact, ContactCriterion, Witness};
-use crate::rounding::{advance_down, gamma, pose_error_up};
+use crate::rounding::{advance_down, diff_down, gamma, pose_error_up, sum_reaches};
 use crate::{Float, PreparedMotion, RigidMotion, Vec3};
 
 /// What a geometry reports at one time of a conservative-advancement query.
@@ -112,7 +112,7 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
             StepResult::Touching { witness, normal } => {
                 let contact = Contact {
                     time: t,
-                    witness,
+                    witness: Some(witness),
                     normal: normal.or_else(|| witness.normal()),
                 };
                 let outcome = if iterations == 1 {
@@ -130,31 +130,34 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
                 witness,
                 normal,
             } => {
-                let step = if step.is_nan() { T::ZERO } else { step };
-                // The bounds hold over [t, horizon] only: `next_down` makes
-                // the rounded length at most the exact one (as `advance_down`).
-                // At the interval's end the step may reach past it: that is
-                // `Separated`.
+                let step = if step.is_nan() || step < T::ZERO {
+                    T::ZERO
+                } else {
+                    step
+                };
                 let step = if horizon < end {
-                    step.min_nan((horizon - t).next_down())
+                    // The bounds hold over [t, horizon] only: the step is cut
+                    // to at most the exact `horizon - t`, and a step cut so is
+                    // not an end (`proofs/09-ca-toi.md`, Lemma 9.3).
+                    step.min_nan(diff_down(horizon, t))
+                } else if sum_reaches(t, step, end) {
+                    // [t, t + step] is contact-free and reaches the end, in
+                    // exact arithmetic (section "Exact sums").
+                    return report(CaOutcome::Separated, iterations);
                 } else {
                     step
                 };
                 last_step = Some(step);
                 let next = advance_down(t, step);
-                if next >= end {
-                    return report(CaOutcome::Separated, iterations);
-                }
-                if step <= params.time_tolerance || next <= t {
-                    let witness = witness.unwrap_or(Witness {
-                        distance: T::INFINITY,
-                        on_a: pa.motion().centre_at(t).to_vec3(),
-                        on_b: pb.motion().centre_at(t).to_vec3(),
-                    });
+                // Within the time tolerance of the end, a short step is no
+                // stall: the query goes on, to a contact, `Separated` or the
+                // iteration limit.
+                let stalled = step <= params.time_tolerance || next <= t;
+                if stalled && !sum_reaches(t, params.time_tolerance, end) {
                     let contact = Contact {
                         time: t,
                         witness,
-                        normal: normal.or_else(|| witness.normal()),
+                        normal: normal.or_else(|| witness.and_then(|w| w.normal())),
                     };
                     return report(
                         CaOutcome::Contact {
@@ -163,6 +166,11 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
                         },
                         iterations,
                     );
+                }
+                if next <= t {
+                    // Time cannot advance any more (a step below its
+                    // resolution) within the tolerance of the end.
+                    return report(CaOutcome::IterationLimit { time: t }, iterations);
                 }
                 t = next;
             }
@@ -189,10 +197,12 @@ pub fn placement_error<T: Float>(motion: &RigidMotion<T>, t: T, radius: T) -> (T
 /// A certified safe step from a computed gap along a direction: `gap` is
 /// `min_B fl(q . n) - max_A fl(p . n)` over the placed points of both bodies,
 /// `err_*`/`reach_*` come from [`placement_error`], and `mu_*` bound the
-/// speeds along `n` (the directed bounds of this crate). Returns the step
-/// and the certified gap (`<= 0`: not separated along `n`, step `0`).
+/// speeds along `n` (the directed bounds of this crate). The step keeps the
+/// slab between the bodies wider than `clearance` (use
+/// [`CaParams::clearance`]; `0` for "until they touch"). Returns the step and
+/// the certified gap (`<= clearance`: no step, `0`).
 #[must_use]
-pub fn gap_step<T: Float>(gap: T, err: (T, T), reach: (T, T), mu: (T, T)) -> (T, T) {
+pub fn gap_step<T: Float>(gap: T, clearance: T, err: (T, T), reach: (T, T), mu: (T, T)) -> (T, T) {
     let g = crate::rounding::gap_down(gap, err.0, err.1, reach.0 + reach.1);
-    (crate::rounding::step_down(g, mu.0, mu.1), g)
+    (crate::rounding::step_down(g, clearance, mu.0, mu.1), g)
 }

@@ -7,7 +7,7 @@ use crate::bvh::{BallTree, Leaf};
 use crate::ca::driver::{gap_step, placement_error};
 use crate::ca::{CaParams, CaStep, StepResult, Witness};
 use crate::geometry::closest::triangle_triangle;
-use crate::rounding::{gamma, BoxError};
+use crate::rounding::{diff_up, gamma, gap_down, step_down, BoxError};
 use crate::{BoundKind, BoundingBall, Direction, Float, Pose, PreparedMotion, Vec3};
 
 /// The default of [`MeshPair::with_far_ratio`].
@@ -302,17 +302,21 @@ impl<T: Float> MeshPair<'_, T> {
     /// The safe step of a node pair (Lemma 9.1): the largest gap between
     /// the placed nodes along one of three directions (the line joining the
     /// box centres, where the balls' gap counts too, and each box's thinnest
-    /// axis), over the balls' directed bounds along it; `0` when no
-    /// direction separates them.
+    /// axis), over the balls' directed bounds along it.
+    ///
+    /// A pair whose certified gap is at most the contact distance (or that
+    /// no direction separates) is a [`NodeStep::Near`] candidate: triangles
+    /// below it may be within the contact distance now, so it is split
+    /// whatever its step, nearest first.
     fn node_step(
         &mut self,
         pa: &Placed<'_, T>,
         pb: &Placed<'_, T>,
         (i, j): (u32, u32),
         (qa, qb): (PlacedNode<T>, PlacedNode<T>),
-        rates: Rates,
+        (rates, contact_distance, clearance): (Rates, T, T),
         best_step: T,
-    ) -> (T, bool) {
+    ) -> NodeStep<T> {
         let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
         let d = qb.centre - qa.centre;
         // The gap of the boxes along `n` (any sign of `n`: the slab between
@@ -342,27 +346,34 @@ impl<T: Float> MeshPair<'_, T> {
         }
         let Some((gap, n)) = best else {
             self.stats.overlapping += 1;
-            return (T::ZERO, false);
+            return NodeStep::Near(-T::INFINITY);
         };
+        // The certified gap (section "Gap"): below the contact distance the
+        // pair is a candidate for contact now.
+        let g = gap_down(gap, pa.err, pb.err, pa.reach + pb.reach);
+        if g.is_nan() || g <= contact_distance {
+            return NodeStep::Near(g);
+        }
         // Orient n from A to B: the slab gap is measured along it.
         let n = if d.dot(n.get()) < T::ZERO { -n } else { n };
         let far = gap >= self.far_ratio * (na.ball.radius() + nb.ball.radius());
         // A pair whose step under the crude bound already reaches the best
         // step cannot limit it: no directed bound needed.
-        let crude = (
+        let lower = step_down(
+            g,
+            clearance,
             pa.crude_speed(na.ball.outer_radius_up()),
             pb.crude_speed(nb.ball.outer_radius_up()),
         );
-        let (lower, _) = gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), crude);
         if lower >= best_step {
-            return (lower, far);
+            return NodeStep::Apart { step: lower, far };
         }
         self.stats.bounds += 2;
-        let mu = rates.balls(pa, pb, (&na.ball, &nb.ball), n);
-        (
-            gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu).0,
+        let (mu_a, mu_b) = rates.balls(pa, pb, (&na.ball, &nb.ball), n);
+        NodeStep::Apart {
+            step: step_down(g, clearance, mu_a, mu_b),
             far,
-        )
+        }
     }
 
     /// Puts a node pair in the best-first queue.
@@ -370,6 +381,7 @@ impl<T: Float> MeshPair<'_, T> {
     fn enqueue(&mut self, pair: Pending) {
         let slot = self.pending.len() as u32;
         self.heap.push(Queued {
+            near: pair.near,
             key: pair.key,
             slot,
         });
@@ -385,8 +397,7 @@ impl<T: Float> MeshPair<'_, T> {
         (pa, pb): (&Placed<'_, T>, &Placed<'_, T>),
         (i, j): (usize, usize),
         (ta, tb): (&[Vec3<T>; 3], &[Vec3<T>; 3]),
-        rates: Rates,
-        contact_distance: T,
+        (rates, contact_distance, clearance): (Rates, T, T),
         (best, witness, normal): (&mut T, &mut Option<Witness<T>>, &mut Option<Vec3<T>>),
     ) -> Option<StepResult<T>> {
         let (la, lb) = (&self.a.leaves[i], &self.b.leaves[j]);
@@ -413,7 +424,7 @@ impl<T: Float> MeshPair<'_, T> {
         self.stats.bounds += 2;
         let mu = rates.leaves(pa, pb, (la, lb), n);
         let gap = slab_gap(ta, tb, nv);
-        let (step, _) = gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu);
+        let (step, _) = gap_step(gap, clearance, (pa.err, pb.err), (pa.reach, pb.reach), mu);
         self.seeds.insert(step.to_f64(), (i as u32, j as u32));
         if step < *best {
             *best = step;
@@ -431,10 +442,24 @@ fn slab_gap<T: Float>(ta: &[Vec3<T>; 3], tb: &[Vec3<T>; 3], n: Vec3<T>) -> T {
     lo_b - hi_a
 }
 
-/// An entry of the best-first queue: a node pair's safe step and where the
-/// pair is in `MeshPair::pending` (kept small: the queue moves its entries).
+/// What [`MeshPair::node_step`] found for a node pair.
+#[derive(Clone, Copy, Debug)]
+enum NodeStep<T> {
+    /// Certified apart by more than the contact distance, with its safe step;
+    /// `far`: far apart for its size (its step is taken as it is).
+    Apart { step: T, far: bool },
+    /// Its certified gap (`-inf` when no direction separates the volumes) is
+    /// at most the contact distance: it must be split.
+    Near(T),
+}
+
+/// An entry of the best-first queue: a node pair's key and where the pair is
+/// in `MeshPair::pending` (kept small: the queue moves its entries). Pairs
+/// near enough for contact come first, least gap first; then the others,
+/// least step first.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Queued {
+    near: bool,
     key: OrdF64,
     slot: u32,
 }
@@ -442,6 +467,10 @@ struct Queued {
 /// A node pair waiting in the best-first queue.
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct Pending {
+    /// Near enough for contact now ([`NodeStep::Near`]): `key` is its gap,
+    /// and it is split whatever the best step.
+    near: bool,
+    /// The pair's safe step (or, when `near`, its certified gap).
     key: OrdF64,
     i: u32,
     j: u32,
@@ -452,9 +481,14 @@ struct Pending {
 }
 
 impl Pending {
-    fn new<T: Float>(step: T, (i, j): (u32, u32), far: bool, at: (u32, u32)) -> Self {
+    fn new<T: Float>(found: NodeStep<T>, (i, j): (u32, u32), at: (u32, u32)) -> Self {
+        let (near, key, far) = match found {
+            NodeStep::Apart { step, far } => (false, step, far),
+            NodeStep::Near(gap) => (true, gap, false),
+        };
         Self {
-            key: OrdF64(step.to_f64()),
+            near,
+            key: OrdF64(key.to_f64()),
             i,
             j,
             far,
@@ -472,13 +506,16 @@ impl PartialOrd for Queued {
 }
 
 impl Ord for Queued {
-    /// Reversed: `BinaryHeap` pops the pair with the least step first.
+    /// Reversed: `BinaryHeap` pops the greatest, which is the near pair with
+    /// the least gap, else the pair with the least step.
     fn cmp(&self, other: &Self) -> core::cmp::Ordering {
-        other.key.0.total_cmp(&self.key.0)
+        self.near
+            .cmp(&other.near)
+            .then_with(|| other.key.0.total_cmp(&self.key.0))
     }
 }
 
-/// An `f64` key (a step converted exactly from `f32` or `f64`).
+/// An `f64` key (a step or gap converted exactly from `f32` or `f64`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 struct OrdF64(f64);
 
@@ -521,7 +558,12 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             kind: params.bound.cheap_kind(),
             one_sided: params.one_sided,
         };
-        let mut best = b.motion().interval().end() - t;
+        // Every pair whose step reaches the end of the bounds' interval is
+        // pruned against a best step that is at least the exact rest of it,
+        // so a descent that finds nothing shorter returns a step the driver
+        // reads as reaching the end (section "Exact sums").
+        let mut best = diff_up(b.motion().interval().end(), t);
+        let (cd, clear) = (params.contact_distance, params.clearance());
         let mut witness: Option<Witness<T>> = None;
         let mut normal = None;
         self.heap.clear();
@@ -538,8 +580,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 (&pa, &pb),
                 (i, j),
                 (&corners.0, &corners.1),
-                rates,
-                params.contact_distance,
+                (rates, cd, clear),
                 (&mut best, &mut witness, &mut normal),
             ) {
                 return touching;
@@ -549,11 +590,18 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         self.placed.push(pa.place(self.a, 0));
         self.placed.push(pb.place(self.b, 0));
         self.pending.clear();
-        self.enqueue(Pending::new(T::ZERO, (0, 0), false, (0, 1)));
+        self.enqueue(Pending::new(NodeStep::Near(-T::INFINITY), (0, 0), (0, 1)));
         while let Some(Queued { slot, .. }) = self.heap.pop() {
-            let Pending { key, i, j, far, at } = self.pending[slot as usize];
+            let Pending {
+                near,
+                key,
+                i,
+                j,
+                far,
+                at,
+            } = self.pending[slot as usize];
             let key = T::from_f64(key.0);
-            if key >= best * self.accept {
+            if !near && key >= best * self.accept {
                 // Best-first: every pair left has a step at least `key`, so
                 // `min(best, key)` is safe for the whole meshes.
                 self.stats.pruned += self.heap.len() as u64 + 1;
@@ -579,13 +627,19 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 // Cheap first: the corners' slab along the line joining the
                 // ball centres (Lemma 9.1 holds for any direction).
                 let (qa, qb) = (self.placed[at.0 as usize], self.placed[at.1 as usize]);
+                // A pair certainly farther apart than the contact distance
+                // along it is pruned when its step reaches the best.
                 if let Ok(n) = Direction::try_new(qb.centre - qa.centre) {
-                    let gap = slab_gap(&ta, &tb, n.get());
-                    if gap > T::ZERO {
+                    let g = gap_down(
+                        slab_gap(&ta, &tb, n.get()),
+                        pa.err,
+                        pb.err,
+                        pa.reach + pb.reach,
+                    );
+                    if g > cd {
                         self.stats.bounds += 2;
-                        let mu = rates.leaves(&pa, &pb, (la, lb), n);
-                        let (step, _) = gap_step(gap, (pa.err, pb.err), (pa.reach, pb.reach), mu);
-                        if step >= best {
+                        let (mu_a, mu_b) = rates.leaves(&pa, &pb, (la, lb), n);
+                        if step_down(g, clear, mu_a, mu_b) >= best {
                             self.stats.pruned += 1;
                             continue;
                         }
@@ -595,8 +649,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                     (&pa, &pb),
                     (li, lj),
                     (&ta, &tb),
-                    rates,
-                    params.contact_distance,
+                    (rates, cd, clear),
                     (&mut best, &mut witness, &mut normal),
                 ) {
                     return touching;
@@ -622,11 +675,9 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                     ((i, child), (at.0, slot))
                 };
                 let q = (self.placed[at.0 as usize], self.placed[at.1 as usize]);
-                let (step, far) = self.node_step(&pa, &pb, pair, q, rates, best);
-                if step < best {
-                    self.enqueue(Pending::new(step, pair, far, at));
-                } else {
-                    self.stats.pruned += 1;
+                match self.node_step(&pa, &pb, pair, q, (rates, cd, clear), best) {
+                    NodeStep::Apart { step, .. } if step >= best => self.stats.pruned += 1,
+                    found => self.enqueue(Pending::new(found, pair, at)),
                 }
             }
         }

@@ -12,7 +12,10 @@
 //!   a safe step, or "touching". Implement it for your own geometry, or use
 //!   one of the steppers of this crate.
 //! * [`time_of_impact`] runs the loop and says what ended it ([`CaOutcome`]),
-//!   with the iteration count.
+//!   with the iteration count: a contact (within
+//!   [`CaParams::contact_distance`], by distance or by a stall of the steps),
+//!   [`CaOutcome::Separated`] when a certified step reaches the end of the
+//!   interval, or the iteration limit.
 //! * [`CaParams`] holds the tolerances, the iteration limit and the bound
 //!   choice ([`BoundChoice`]).
 

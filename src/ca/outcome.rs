@@ -26,13 +26,24 @@ impl<T: Float> Witness<T> {
 }
 
 /// A contact: the time and the closest features at that time.
+///
+/// What "contact" means: the bodies' computed distance is at most
+/// [`CaParams::contact_distance`](crate::ca::CaParams::contact_distance). For
+/// meshes the distance is between their surfaces (the triangles): a body
+/// wholly inside a closed mesh is not in contact with it. The reported time
+/// is never later than the first time the surfaces touch (distance 0) under
+/// the exact motions (`proofs/09-ca-toi.md`); conservative advancement steps
+/// towards touching, so it is not necessarily the first time the distance
+/// fell to the contact distance.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Contact<T> {
-    /// The reported time of contact; never later than the true first
-    /// contact (`proofs/09-ca-toi.md`).
+    /// The reported time of contact; never later than the first time the
+    /// surfaces touch.
     pub time: T,
-    /// The closest features at `time`.
-    pub witness: Witness<T>,
+    /// The closest features at `time`, when the stepper measured them
+    /// (always for [`ContactCriterion::Distance`] and initial contacts; a
+    /// contact by time tolerance may have none).
+    pub witness: Option<Witness<T>>,
     /// The unit contact normal from A to B at `time`, when the stepper knew
     /// one (the last separating direction it used), else the witnesses'.
     pub normal: Option<Vec3<T>>,
@@ -44,9 +55,16 @@ pub struct Contact<T> {
 pub enum ContactCriterion {
     /// The distance fell to the contact distance or below.
     Distance,
-    /// The safe step fell below the time tolerance while the distance was
-    /// still above the contact distance (a fast or grazing approach): the time
-    /// is still never later than a true contact, but there may be none.
+    /// The certified steps stalled: at `time`, at least the time tolerance
+    /// before the interval's end, a step was at most the time tolerance (or
+    /// too short to advance time at all) while the distance was still above
+    /// the contact distance (a very fast or grazing approach).
+    ///
+    /// Guaranteed: no contact before `time`, and `time + time_tolerance` is
+    /// before the interval's end. Not guaranteed: that a contact follows
+    /// (a grazing pass may stay apart). Near the end no stall is declared:
+    /// a query there goes on to a contact, [`CaOutcome::Separated`] or
+    /// [`CaOutcome::IterationLimit`].
     TimeTolerance,
 }
 
@@ -63,10 +81,14 @@ pub enum CaOutcome<T> {
     },
     /// The bodies are already within the contact distance at the start.
     InitialContact(Contact<T>),
-    /// No contact in the interval: the bodies are certified separated over it.
+    /// No contact in the interval: a certified step from the last time
+    /// reached the interval's end (in exact arithmetic), so the bodies do not
+    /// touch anywhere in it.
     Separated,
-    /// The iteration limit was reached; no contact before `time` (certified),
-    /// nothing known after.
+    /// Undecided from `time` on: the iteration limit was reached, or, within
+    /// the time tolerance of the interval's end, a step was too short to
+    /// advance time. No contact before `time` (certified), nothing known
+    /// after.
     IterationLimit {
         /// The safe time reached.
         time: T,

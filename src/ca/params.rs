@@ -42,9 +42,16 @@ impl BoundChoice {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CaParams<T> {
     /// Contact is declared when the distance is at most this (in the scene's
-    /// length unit). Default `1e-4`: set it for your scale.
+    /// length unit; for meshes, the distance between their surfaces), at the
+    /// start ([`CaOutcome::InitialContact`](crate::ca::CaOutcome::InitialContact))
+    /// or as soon as a step finds the bodies within it. Any finite size is
+    /// legal, larger than the bodies too. The steps keep the distance above
+    /// half of it ([`clearance`](Self::clearance)), so the reported time is
+    /// never later than the first time the distance falls to that.
+    /// Default `1e-4`: set it for your scale.
     pub contact_distance: T,
-    /// A step shorter than this ends the query with
+    /// A step at most this long, taken at least this long before the end of
+    /// the interval, ends the query with
     /// [`ContactCriterion::TimeTolerance`](crate::ca::ContactCriterion::TimeTolerance)
     /// (the bodies approach too fast to resolve further). Default `1e-9`.
     pub time_tolerance: T,
@@ -126,6 +133,21 @@ impl<T: Float> CaParams<T> {
     pub const fn with_horizon_factor(mut self, factor: T) -> Self {
         self.horizon_factor = factor;
         self
+    }
+
+    /// The clearance the certified steps keep: half the contact distance.
+    ///
+    /// Every step is certified to keep the bodies more than this apart, so a
+    /// query never steps over a stretch where the distance falls to half the
+    /// contact distance, and a contact is then declared as soon as a step
+    /// finds the distance at most the contact distance (which it must, before
+    /// the distance reaches the clearance: the steps shrink towards that
+    /// time). The half is a trade: a clearance nearer the contact distance
+    /// would catch shallower dips but converge more slowly.
+    #[inline]
+    #[must_use]
+    pub fn clearance(&self) -> T {
+        self.contact_distance * T::HALF
     }
 
     /// Checks the parameters.

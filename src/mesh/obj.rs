@@ -91,6 +91,14 @@ fn from_models<T: Float>(models: &[tobj::Model]) -> Result<TriMesh<T>, MeshError
     TriMesh::try_new(vertices, triangles)
 }
 
+/// Whether OBJ text has a position line (`v x y z`).
+fn has_position(text: &[u8]) -> bool {
+    text.split(|&b| b == b'\n').any(|line| {
+        let line = line.trim_ascii_start();
+        line.len() > 1 && line[0] == b'v' && line[1].is_ascii_whitespace()
+    })
+}
+
 impl<T: Float> TriMesh<T> {
     /// Reads a mesh from OBJ text in `reader`: positions (`v`) and faces
     /// (`f`, triangulated as fans); normals, texture coordinates, points,
@@ -99,14 +107,29 @@ impl<T: Float> TriMesh<T> {
     /// position shared by two objects appears twice).
     ///
     /// # Errors
-    /// [`MeshError::Obj`] for what tobj rejects; the [`TriMesh::try_new`]
-    /// errors for what it accepts but the mesh does not (no face, a vertex
-    /// beyond [`Float::MAX_INPUT`]).
+    /// [`MeshError::Obj`] for what tobj rejects or an input that cannot be
+    /// read; [`MeshError::NoTriangles`] for positions without a face,
+    /// [`MeshError::NoVertices`] for neither; the [`TriMesh::try_new`]
+    /// errors for what tobj accepts but the mesh does not (a vertex beyond
+    /// [`Float::MAX_INPUT`]).
     pub fn from_obj_reader<R: BufRead>(reader: &mut R) -> Result<Self, MeshError> {
-        let (models, _materials) = tobj::load_obj_buf(reader, &options(), |_| {
+        let mut text = Vec::new();
+        reader
+            .read_to_end(&mut text)
+            .map_err(|_| MeshError::Obj(ObjError(tobj::LoadError::ReadError)))?;
+        let (models, _materials) = tobj::load_obj_buf(&mut text.as_slice(), &options(), |_| {
             Ok((Vec::new(), std::collections::HashMap::new()))
         })
         .map_err(|e| MeshError::Obj(ObjError(e)))?;
+        if models.iter().all(|m| m.mesh.indices.is_empty()) {
+            // tobj keeps no model without a face, so its vertices are gone
+            // too: say which of the two the file lacks.
+            return Err(if has_position(&text) {
+                MeshError::NoTriangles
+            } else {
+                MeshError::NoVertices
+            });
+        }
         from_models(&models)
     }
 
@@ -158,11 +181,16 @@ mod tests {
             ),
             "face beyond the vertices"
         );
-        // tobj keeps no model without a face, so the vertices go too.
+        // Positions without a face: said so (tobj drops such models).
         assert_eq!(
-            TriMesh::<f64>::from_obj_str("v 0 0 0\n"),
-            Err(MeshError::NoVertices),
+            TriMesh::<f64>::from_obj_str("v 0 0 0\nv 1 0 0\n  v 0 1 0\n"),
+            Err(MeshError::NoTriangles),
             "no face"
+        );
+        assert_eq!(
+            TriMesh::<f64>::from_obj_str("# nothing\nvn 0 0 1\n"),
+            Err(MeshError::NoVertices),
+            "no position"
         );
         assert!(
             matches!(

@@ -16,6 +16,7 @@ use crate::{Direction, Float, Point3, RigidMotion, TimeInterval, Vec3};
 pub use crate::geometry::exact::triangles_intersect_exact;
 
 pub mod ground_truth;
+pub mod table1;
 pub mod toi;
 
 /// How the raw vertices are placed.
