@@ -139,66 +139,57 @@ extern crate alloc;
 #[cfg(not(any(feature = "std", feature = "libm")))]
 compile_error!("motion-bound needs either the `std` or the `libm` feature for its float functions");
 
-mod arc;
-mod ball;
-mod body;
 mod bound;
 #[cfg(feature = "alloc")]
 mod bvh;
 pub mod ca;
-mod direction;
 mod error;
-mod evq;
 mod features;
 mod float;
 mod geometry;
-mod interval;
+mod math;
 #[cfg(feature = "alloc")]
 mod mesh;
 mod motion;
-mod nevq;
-mod point;
-mod pose;
-mod probe;
-mod rotation;
 mod rounding;
-mod vec3;
+mod shape;
 
 #[cfg(feature = "reference")]
 pub mod reference;
-#[cfg(feature = "alloc")]
+#[cfg(feature = "scenes")]
 pub mod scenes;
 #[cfg(feature = "testkit")]
 pub mod testkit;
 
-pub use arc::{PreparedMotion, SweptArc};
-pub use ball::BoundingBall;
-pub use body::{BodySummary, VertexSet};
-pub use bound::{directed_bound, BoundKind, DirectedBound};
+pub use bound::directed::{BoundKind, DirectedBound};
+pub use bound::directed_bound;
+#[cfg(feature = "testkit")]
+pub use bound::evq::evq_speed_unmargined;
+pub use bound::evq::{evq, evq_speed};
+#[cfg(feature = "testkit")]
+pub use bound::nevq::nevq_speed_unmargined;
+pub use bound::nevq::{nevq, nevq_speed};
+pub use bound::probe::DirectedProbe;
 #[cfg(feature = "alloc")]
 pub use bvh::BallTree;
-pub use direction::Direction;
 pub use error::{InputError, Quantity};
-#[cfg(feature = "testkit")]
-pub use evq::evq_speed_unmargined;
-pub use evq::{evq, evq_speed};
 pub use float::Float;
 pub use geometry::closest::{point_triangle, segment_segment, triangle_triangle, ClosestPoints};
 pub use geometry::gjk::{gjk_distance, ConvexPolytope, GjkParams, GjkResult, SupportMap};
-pub use interval::TimeInterval;
+pub use math::direction::Direction;
+pub use math::point::{BodyPoint, Point3};
+pub use math::pose::Pose;
+pub use math::rotation::{rotate_about_axis, RotationPlane};
+pub use math::vec3::Vec3;
 #[cfg(feature = "obj")]
 pub use mesh::ObjError;
 #[cfg(feature = "alloc")]
 pub use mesh::{EdgeReport, MeshError, OffError, OffErrorKind, TriMesh};
-pub use motion::RigidMotion;
-#[cfg(feature = "testkit")]
-pub use nevq::nevq_speed_unmargined;
-pub use nevq::{nevq, nevq_speed};
-pub use point::{BodyPoint, Point3};
-pub use pose::Pose;
-pub use probe::DirectedProbe;
-pub use rotation::{rotate_about_axis, RotationPlane};
-pub use vec3::Vec3;
+pub use motion::arc::{PreparedMotion, SweptArc};
+pub use motion::interval::TimeInterval;
+pub use motion::rigid::RigidMotion;
+pub use shape::ball::BoundingBall;
+pub use shape::body::{BodySummary, VertexSet};
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]

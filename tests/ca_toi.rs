@@ -10,7 +10,7 @@
 
 use motion_bound::ca::{
     time_of_impact, BallPair, BoundChoice, CaOutcome, CaParams, CaReport, CaStep, ContactCriterion,
-    ConvexPair, MeshPair, StepResult,
+    ConvexPair, MeshPair, MeshParams, StepResult,
 };
 use motion_bound::scenes::{board, icosphere, torus, TorusKnot};
 use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
@@ -156,7 +156,9 @@ fn run_meshes_with(
             params = params
                 .with_horizon_factor(horizon)
                 .with_one_sided(one_sided);
-            pair = pair.with_far_ratio(far);
+            pair = pair
+                .try_with_params(MeshParams::default().with_far_ratio(far))
+                .expect("valid knobs");
         }
         let report = time_of_impact(&mut pair, &q.a, &q.b, &params).expect("valid query");
         let truth = first_sampled_contact(
@@ -454,7 +456,7 @@ fn parameters_and_intervals_are_validated() {
         assert_eq!(
             time_of_impact(pair, &m, &m, &bad).err(),
             Some(motion_bound::ca::CaError::InvalidParameter(
-                "horizon_factor"
+                motion_bound::ca::Parameter::HorizonFactor
             )),
             "horizon factor {f}"
         );

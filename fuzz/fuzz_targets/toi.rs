@@ -22,7 +22,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use motion_bound::ca::{
-    time_of_impact, BoundChoice, CaOutcome, CaParams, ContactCriterion, MeshPair,
+    time_of_impact, BoundChoice, CaOutcome, CaParams, ContactCriterion, MeshPair, MeshParams,
 };
 use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
 use motion_bound::{BallTree, RigidMotion};
@@ -81,8 +81,12 @@ fn run(data: &[u8]) {
         .with_horizon_factor(horizon)
         .with_one_sided(one_sided);
     let mut pair = MeshPair::new(&ta, &tb)
-        .with_far_ratio(far)
-        .with_accept_fraction(accept);
+        .try_with_params(
+            MeshParams::default()
+                .with_far_ratio(far)
+                .with_accept_fraction(accept),
+        )
+        .expect("knobs in range");
     let report = time_of_impact(&mut pair, &ma, &mb, &params).expect("valid query");
     let truth = first_sampled_contact(
         MeshRef {

@@ -31,6 +31,6 @@ pub use balls::BallPair;
 pub use convex::{ConvexPair, GjkProximity, Proximity};
 pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};
 #[cfg(feature = "alloc")]
-pub use mesh::{MeshPair, TraversalStats};
+pub use mesh::{MeshPair, MeshWorkspace, TraversalStats};
 pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness};
-pub use params::{BoundChoice, CaError, CaParams};
+pub use params::{BoundChoice, CaError, CaParams, MeshParams, Parameter};

@@ -159,19 +159,118 @@ impl<T: Float> CaParams<T> {
     pub fn validate(&self) -> Result<(), CaError> {
         let ok = |x: T| x.is_finite() && x >= T::ZERO;
         if !ok(self.contact_distance) {
-            return Err(CaError::InvalidParameter("contact_distance"));
+            return Err(CaError::InvalidParameter(Parameter::ContactDistance));
         }
         if !ok(self.time_tolerance) {
-            return Err(CaError::InvalidParameter("time_tolerance"));
+            return Err(CaError::InvalidParameter(Parameter::TimeTolerance));
         }
         let f = self.horizon_factor;
         if !(f == T::ZERO || f > T::ONE) {
-            return Err(CaError::InvalidParameter("horizon_factor"));
+            return Err(CaError::InvalidParameter(Parameter::HorizonFactor));
         }
         if self.max_iterations == 0 {
-            return Err(CaError::InvalidParameter("max_iterations"));
+            return Err(CaError::InvalidParameter(Parameter::MaxIterations));
         }
         Ok(())
+    }
+}
+
+/// The tuning knobs of the mesh traversal ([`MeshPair`](crate::ca::MeshPair)):
+/// every value in range is sound; they trade work per step against steps.
+///
+/// ```
+/// use motion_bound::ca::MeshParams;
+/// let p = MeshParams::<f64>::default().with_far_ratio(8.0);
+/// assert_eq!((p.accept_fraction, p.far_ratio), (1.0, 8.0));
+/// assert!(p.validate().is_ok());
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct MeshParams<T> {
+    /// A step is accepted once every pair left in the queue has a step at
+    /// least this fraction of the best found. Default `1`: the least step
+    /// over the finest cut the traversal reaches. A smaller fraction refines
+    /// less per step and takes shorter steps. In `(0, 1]`.
+    pub accept_fraction: T,
+    /// A node pair whose volumes' gap is at least this many times the sum
+    /// of its balls' radii is settled with its own step, not split: below
+    /// it the gap grows by at most `2 / ratio` of itself, so splitting buys
+    /// little step and costs a descent. Default `6`; `+inf` always splits.
+    /// At least `0`.
+    pub far_ratio: T,
+}
+
+impl<T: Float> Default for MeshParams<T> {
+    fn default() -> Self {
+        Self {
+            accept_fraction: T::ONE,
+            far_ratio: T::from_f64(6.0),
+        }
+    }
+}
+
+impl<T: Float> MeshParams<T> {
+    /// With another accept fraction.
+    #[must_use]
+    pub const fn with_accept_fraction(mut self, fraction: T) -> Self {
+        self.accept_fraction = fraction;
+        self
+    }
+
+    /// With another far ratio.
+    #[must_use]
+    pub const fn with_far_ratio(mut self, ratio: T) -> Self {
+        self.far_ratio = ratio;
+        self
+    }
+
+    /// Checks the knobs.
+    ///
+    /// # Errors
+    /// [`CaError::InvalidParameter`] with [`Parameter::AcceptFraction`] for a
+    /// fraction outside `(0, 1]` (or NaN), [`Parameter::FarRatio`] for a
+    /// negative or NaN ratio.
+    pub fn validate(&self) -> Result<(), CaError> {
+        let f = self.accept_fraction;
+        if !(f > T::ZERO && f <= T::ONE) {
+            return Err(CaError::InvalidParameter(Parameter::AcceptFraction));
+        }
+        if self.far_ratio.is_nan() || self.far_ratio < T::ZERO {
+            return Err(CaError::InvalidParameter(Parameter::FarRatio));
+        }
+        Ok(())
+    }
+}
+
+/// A parameter of a query ([`CaParams`] or [`MeshParams`]), as named by
+/// [`CaError::InvalidParameter`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Parameter {
+    /// [`CaParams::contact_distance`]: finite and at least `0`.
+    ContactDistance,
+    /// [`CaParams::time_tolerance`]: finite and at least `0`.
+    TimeTolerance,
+    /// [`CaParams::max_iterations`]: at least `1`.
+    MaxIterations,
+    /// [`CaParams::horizon_factor`]: `0` or above `1`.
+    HorizonFactor,
+    /// [`MeshParams::accept_fraction`]: in `(0, 1]`.
+    AcceptFraction,
+    /// [`MeshParams::far_ratio`]: at least `0`.
+    FarRatio,
+}
+
+impl fmt::Display for Parameter {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Self::ContactDistance => "contact_distance (finite, at least 0)",
+            Self::TimeTolerance => "time_tolerance (finite, at least 0)",
+            Self::MaxIterations => "max_iterations (at least 1)",
+            Self::HorizonFactor => "horizon_factor (0 or above 1)",
+            Self::AcceptFraction => "accept_fraction (in (0, 1])",
+            Self::FarRatio => "far_ratio (at least 0)",
+        })
     }
 }
 
@@ -179,8 +278,8 @@ impl<T: Float> CaParams<T> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum CaError {
-    /// A parameter is out of range (named).
-    InvalidParameter(&'static str),
+    /// A parameter is out of range.
+    InvalidParameter(Parameter),
     /// The two motions are over different time intervals.
     IntervalMismatch,
     /// An input was rejected by the core (a motion restricted to a
@@ -191,7 +290,7 @@ pub enum CaError {
 impl fmt::Display for CaError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Self::InvalidParameter(p) => write!(f, "parameter `{p}` is out of range"),
+            Self::InvalidParameter(p) => write!(f, "parameter out of range: {p}"),
             Self::IntervalMismatch => f.write_str("the two motions have different intervals"),
             Self::Input(e) => write!(f, "invalid input: {e}"),
         }

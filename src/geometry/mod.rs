@@ -12,8 +12,6 @@
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
 pub(crate) mod closest;
-#[cfg(feature = "testkit")]
-pub(crate) mod exact;
 pub(crate) mod gjk;
 mod intersect;
 mod predicates;

@@ -13,8 +13,9 @@ use std::vec::Vec;
 
 use crate::{Direction, Float, Point3, RigidMotion, TimeInterval, Vec3};
 
-pub use crate::geometry::exact::triangles_intersect_exact;
+pub use exact::triangles_intersect_exact;
 
+mod exact;
 pub mod ground_truth;
 pub mod table1;
 pub mod toi;

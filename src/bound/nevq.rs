@@ -1,7 +1,6 @@
 //! The NEVQ bound: the seed's Eq. 3.
 
-use crate::bound::Projection;
-use crate::rounding::{assemble, nevq_rotational_up};
+use crate::bound::projection::{nevq_speed_from, Projection};
 use crate::{BodySummary, DirectedBound, Direction, Float, RigidMotion};
 
 /// The seed's Eq. 3, `mu = |v.n| + |n x w| max_i |r_i|`, rounded up.
@@ -36,11 +35,6 @@ pub fn nevq<T: Float>(
 pub fn nevq_speed<T: Float>(body: &BodySummary<T>, motion: &RigidMotion<T>, n: Direction<T>) -> T {
     let p = Projection::new(motion, n);
     nevq_speed_from(&p, body.max_radius())
-}
-
-#[inline]
-pub(crate) fn nevq_speed_from<T: Float>(p: &Projection<T>, r_hat: T) -> T {
-    assemble(p.linear_up(), nevq_rotational_up(p.c_norm, p.w_l1, r_hat))
 }
 
 /// The NEVQ speed in plain floating point, without any rounding margin:

@@ -1,7 +1,7 @@
 //! Rigid motion with constant linear and angular velocity.
 
 use crate::error::{check_components, InputError, Quantity};
-use crate::rotation::rotate_about_axis;
+use crate::math::rotation::rotate_about_axis;
 use crate::{BodyPoint, Direction, Float, Point3, Pose, TimeInterval, Vec3};
 
 /// A rigid motion with constant linear velocity `v` of the rotation centre and

@@ -1,9 +1,8 @@
 //! Directed bounds for one motion along one direction, for many bodies:
 //! vertex sets, bounding balls, body summaries.
 
-use crate::bound::Projection;
-use crate::evq::{arc_scan, arc_signed_scan, full_turn_scan};
-use crate::nevq::nevq_speed_from;
+use crate::bound::projection::{nevq_speed_from, Projection};
+use crate::bound::scan::{arc_scan, arc_signed_scan, full_turn_scan};
 use crate::rounding::{
     assemble, evq_rotational_up, gamma, nevq_rotational_up, one_sided_decision_slack, one_sided_up,
 };

@@ -1,7 +1,7 @@
-//! Directed motion bounds: what they bound, and choosing one per query.
+//! What a directed bound bounds ([`DirectedBound`]), and which one ([`BoundKind`]).
 
-use crate::rounding::{displacement_up, linear_up};
-use crate::{Direction, Float, RigidMotion, Vec3, VertexSet};
+use crate::rounding::displacement_up;
+use crate::{Float, RigidMotion};
 
 /// Which directed bound a query uses.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
@@ -84,67 +84,5 @@ impl<T: Float> DirectedBound<T> {
                 s
             }
         }
-    }
-}
-
-/// The per-query quantities both bounds share: `a = v.n`, `c = n x w`.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Projection<T> {
-    /// `fl(v . n)`.
-    pub(crate) a: T,
-    /// `fl(sum |v_k n_k|)`, the magnitude bounding the error of `a`.
-    pub(crate) a_mag: T,
-    /// `fl(n x w)`.
-    pub(crate) c: Vec3<T>,
-    /// `fl(|fl(n x w)|)`.
-    pub(crate) c_norm: T,
-    /// `fl(|w|_1)`.
-    pub(crate) w_l1: T,
-}
-
-impl<T: Float> Projection<T> {
-    #[inline]
-    pub(crate) fn new(motion: &RigidMotion<T>, n: Direction<T>) -> Self {
-        let n = n.get();
-        let v = motion.linear();
-        let w = motion.angular();
-        let c = n.cross(w);
-        Self {
-            a: v.dot(n),
-            a_mag: v.dot_abs(n),
-            c,
-            c_norm: c.length(),
-            w_l1: w.norm_l1(),
-        }
-    }
-
-    #[inline]
-    pub(crate) fn linear_up(&self) -> T {
-        linear_up(self.a, self.a_mag)
-    }
-}
-
-/// The directed bound of kind `kind` for `body` under `motion` along `n`.
-///
-/// ```
-/// use motion_bound::{directed_bound, BoundKind, Direction, RigidMotion, VertexSet};
-/// let body = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-/// let body = VertexSet::try_new(&body).unwrap();
-/// let motion = RigidMotion::try_from_arrays([0.0; 3], [0.0, 0.0, 1.0], [0.0, 0.0, 0.5]).unwrap();
-/// let n = Direction::try_from_array([0.0, 1.0, 1.0]).unwrap();
-/// let nevq = directed_bound(BoundKind::Nevq, &body, &motion, n);
-/// let evq = directed_bound(BoundKind::Evq, &body, &motion, n);
-/// assert!(evq.speed <= nevq.speed);
-/// ```
-#[must_use]
-pub fn directed_bound<T: Float>(
-    kind: BoundKind,
-    body: &VertexSet<'_, T>,
-    motion: &RigidMotion<T>,
-    n: Direction<T>,
-) -> DirectedBound<T> {
-    match kind {
-        BoundKind::Nevq => crate::nevq(&body.summary(), motion, n),
-        BoundKind::Evq => crate::evq(body, motion, n),
     }
 }

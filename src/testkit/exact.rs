@@ -218,8 +218,8 @@ mod tests {
 
     #[test]
     fn hand_made_cases() {
-        let base = super::super::HAND_MADE_BASE;
-        let cases = super::super::HAND_MADE_CASES;
+        let base = crate::geometry::HAND_MADE_BASE;
+        let cases = crate::geometry::HAND_MADE_CASES;
         for (name, b, expect) in cases {
             assert_eq!(meet(&base, &b), expect, "{name}");
             assert_eq!(meet(&b, &base), expect, "{name} (swapped)");

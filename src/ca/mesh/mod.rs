@@ -1,0 +1,309 @@
+//! Conservative advancement of two triangle meshes through their ball trees.
+//!
+//! [`MeshPair`] is the stepper; its pieces, each in its own file: the
+//! descent of one step (`traversal`), the best-first queue and the reusable
+//! scratch space ([`MeshWorkspace`], `queue`), the leaf pairs handed from
+//! step to step (`seeds`) and the work counters ([`TraversalStats`], `stats`).
+
+mod queue;
+mod seeds;
+mod stats;
+mod traversal;
+
+pub use queue::MeshWorkspace;
+pub use stats::TraversalStats;
+
+use queue::{NodeStep, Pending, Queued};
+use seeds::Seeds;
+use traversal::{slab_gap, Placed, Rates};
+
+use crate::bvh::BallTree;
+use crate::ca::driver::placement_error;
+use crate::ca::{CaError, CaParams, CaStep, MeshParams, StepResult, Witness};
+use crate::rounding::{diff_up, gap_down, step_down, BoxError};
+use crate::{Direction, Float, PreparedMotion};
+
+/// Conservative advancement of two non-convex triangle meshes (a
+/// [`CaStep`]): one step is a simultaneous descent of both ball trees.
+///
+/// For a node pair placed at time `t`, the gap `g` between the nodes'
+/// oriented boxes (or balls) is measured along three directions, the line
+/// joining their centres and each box's thinnest axis, and the largest is
+/// kept with its direction `n`; the slab between the nodes closes at most at
+/// `mu_a + mu_b`, the balls' directed bounds (`O(1)` each; by default the
+/// one-sided rates of A along `n` and of B along `-n`,
+/// [`DirectedProbe::ball_rate`](crate::DirectedProbe::ball_rate)), so the
+/// pair cannot touch before `g / (mu_a + mu_b)`. A pair far
+/// apart for its size is settled with that step ([`MeshParams::far_ratio`]). A pair whose
+/// step is at least the best step found so far is pruned; triangle pairs get
+/// their exact distance, their own closest direction and the bounds of their
+/// three corners. The least step over the cut is safe for the whole meshes
+/// (`proofs/09-ca-toi.md`).
+///
+/// A `MeshPair` remembers the (up to four) triangle pairs with the least
+/// steps of its last step and measures them first, at the new time, before
+/// the descent: their steps, usually close to the final one, let it prune
+/// children as they are made (Lemma 9.4; about 10 % fewer node pairs on the
+/// knots). Any seeds are sound, so a pair may be reused across queries.
+#[derive(Debug)]
+pub struct MeshPair<'a, T> {
+    a: &'a BallTree<T>,
+    b: &'a BallTree<T>,
+    /// The queue and the placed nodes: scratch space, reusable.
+    ws: MeshWorkspace<T>,
+    stats: TraversalStats,
+    accept: T,
+    far_ratio: T,
+    closest: Option<(u32, u32)>,
+    /// The leaf pairs with the least steps found by the last step, measured
+    /// first by the next one.
+    seeds: Seeds,
+}
+
+impl<'a, T: Float> MeshPair<'a, T> {
+    /// The pair of meshes `a` and `b` (each relative to its rotation centre).
+    #[must_use]
+    pub fn new(a: &'a BallTree<T>, b: &'a BallTree<T>) -> Self {
+        Self {
+            a,
+            b,
+            ws: MeshWorkspace::new(),
+            stats: TraversalStats::default(),
+            accept: MeshParams::<T>::default().accept_fraction,
+            far_ratio: MeshParams::<T>::default().far_ratio,
+            closest: None,
+            seeds: Seeds::default(),
+        }
+    }
+
+    /// The pair of meshes `a` and `b` with the scratch space `workspace`
+    /// (taken back by [`into_workspace`](Self::into_workspace)): a query in a
+    /// steady loop then allocates nothing.
+    #[must_use]
+    pub fn with_workspace(
+        a: &'a BallTree<T>,
+        b: &'a BallTree<T>,
+        workspace: MeshWorkspace<T>,
+    ) -> Self {
+        Self {
+            ws: workspace,
+            ..Self::new(a, b)
+        }
+    }
+
+    /// The scratch space, for the next pair.
+    #[must_use]
+    pub fn into_workspace(self) -> MeshWorkspace<T> {
+        self.ws
+    }
+
+    /// With the traversal's tuning knobs `params` (the defaults suit most
+    /// scenes).
+    ///
+    /// # Errors
+    /// [`CaError::InvalidParameter`] naming a knob out of range
+    /// ([`MeshParams::validate`]).
+    ///
+    /// ```
+    /// use motion_bound::ca::{CaError, MeshPair, MeshParams, Parameter};
+    /// use motion_bound::{scenes, BallTree};
+    /// let tree = BallTree::try_from_mesh(&scenes::torus::<f64>(0.5, 0.1, 16, 8)?)?;
+    /// let pair = MeshPair::new(&tree, &tree).try_with_params(MeshParams::default().with_far_ratio(f64::INFINITY))?;
+    /// let bad = MeshPair::new(&tree, &tree).try_with_params(MeshParams::default().with_accept_fraction(1.5));
+    /// assert_eq!(bad.err(), Some(CaError::InvalidParameter(Parameter::AcceptFraction)));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn try_with_params(mut self, params: MeshParams<T>) -> Result<Self, CaError> {
+        params.validate()?;
+        self.accept = params.accept_fraction;
+        self.far_ratio = params.far_ratio;
+        Ok(self)
+    }
+
+    /// The triangle indices (in A's and B's meshes) of the closest triangle
+    /// pair the last step found, if it computed one: the witness's triangles.
+    #[must_use]
+    pub const fn closest_triangles(&self) -> Option<(u32, u32)> {
+        self.closest
+    }
+
+    /// The work done since the pair was made or last reset.
+    #[must_use]
+    pub const fn stats(&self) -> TraversalStats {
+        self.stats
+    }
+
+    /// Resets the work counters.
+    pub fn reset_stats(&mut self) {
+        self.stats = TraversalStats::default();
+    }
+}
+
+impl<T: Float> CaStep<T> for MeshPair<'_, T> {
+    fn step(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> StepResult<T> {
+        // Every node centre, box point and corner lies within the tree's
+        // certified reach of the rotation centre: cover them all.
+        let place = |tree: &BallTree<T>, m: &'_ PreparedMotion<T>| {
+            let r = tree.reach;
+            let (err, reach) = placement_error(m.motion(), t, r);
+            (m.motion().pose_at(t), err, reach)
+        };
+        let (pose, err, reach) = place(self.a, a);
+        let pa = Placed {
+            pose,
+            motion: a,
+            err,
+            reach,
+            box_err: BoxError::new(a.motion().angle_at(t)),
+            v_l1: a.motion().linear().norm_l1(),
+            w_l1: a.motion().angular().norm_l1(),
+        };
+        let (pose, err, reach) = place(self.b, b);
+        let pb = Placed {
+            pose,
+            motion: b,
+            err,
+            reach,
+            box_err: BoxError::new(b.motion().angle_at(t)),
+            v_l1: b.motion().linear().norm_l1(),
+            w_l1: b.motion().angular().norm_l1(),
+        };
+        let rates = Rates {
+            kind: params.bound.cheap_kind(),
+            one_sided: params.one_sided,
+        };
+        // Every pair whose step reaches the end of the bounds' interval is
+        // pruned against a best step that is at least the exact rest of it,
+        // so a descent that finds nothing shorter returns a step the driver
+        // reads as reaching the end (section "Exact sums").
+        let mut best = diff_up(b.motion().interval().end(), t);
+        let (cd, clear) = (params.contact_distance, params.clearance());
+        let mut witness: Option<Witness<T>> = None;
+        let mut normal = None;
+        // The previous step's leaf pairs with the least steps are measured
+        // first (Lemma 9.4): each one's own step is safe for that pair, and,
+        // usually close to the final step, it lets the descent prune children
+        // as they are made.
+        self.closest = None;
+        let seed = core::mem::take(&mut self.seeds);
+        for &(i, j) in &seed.pairs[..seed.len] {
+            let (i, j) = (i as usize, j as usize);
+            let corners = (pa.corners(&self.a.leaves[i]), pb.corners(&self.b.leaves[j]));
+            if let Some(touching) = self.triangle_pair(
+                (&pa, &pb),
+                (i, j),
+                (&corners.0, &corners.1),
+                (rates, cd, clear),
+                (&mut best, &mut witness, &mut normal),
+            ) {
+                return touching;
+            }
+        }
+        self.ws.clear();
+        self.ws.placed.push(pa.place(self.a, 0));
+        self.ws.placed.push(pb.place(self.b, 0));
+        self.ws
+            .enqueue(Pending::new(NodeStep::Near(-T::INFINITY), (0, 0), (0, 1)));
+        while let Some(Queued { slot, .. }) = self.ws.heap.pop() {
+            let Pending {
+                near,
+                key,
+                i,
+                j,
+                far,
+                at,
+            } = self.ws.pending[slot as usize];
+            let key = T::from_f64(key.0);
+            if !near && key >= best * self.accept {
+                // Best-first: every pair left has a step at least `key`, so
+                // `min(best, key)` is safe for the whole meshes.
+                self.stats.pruned += self.ws.heap.len() as u64 + 1;
+                best = best.min_nan(key);
+                break;
+            }
+            self.stats.node_pairs += 1;
+            if far {
+                // Splitting a pair this far apart for its size would gain
+                // little: its own step is safe for everything below it.
+                self.stats.settled += 1;
+                best = best.min_nan(key);
+                continue;
+            }
+            let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
+            if let (Some(li), Some(lj)) = (na.leaf(), nb.leaf()) {
+                if seed.contains((li as u32, lj as u32)) {
+                    // Measured before the descent: its step is in `best`.
+                    continue;
+                }
+                let (la, lb) = (&self.a.leaves[li], &self.b.leaves[lj]);
+                let (ta, tb) = (pa.corners(la), pb.corners(lb));
+                // Cheap first: the corners' slab along the line joining the
+                // ball centres (Lemma 9.1 holds for any direction).
+                let (qa, qb) = (self.ws.placed[at.0 as usize], self.ws.placed[at.1 as usize]);
+                // A pair certainly farther apart than the contact distance
+                // along it is pruned when its step reaches the best.
+                if let Ok(n) = Direction::try_new(qb.centre - qa.centre) {
+                    let g = gap_down(
+                        slab_gap(&ta, &tb, n.get()),
+                        pa.err,
+                        pb.err,
+                        pa.reach + pb.reach,
+                    );
+                    if g > cd {
+                        self.stats.bounds += 2;
+                        let (mu_a, mu_b) = rates.leaves(&pa, &pb, (la, lb), n);
+                        if step_down(g, clear, mu_a, mu_b) >= best {
+                            self.stats.pruned += 1;
+                            continue;
+                        }
+                    }
+                }
+                if let Some(touching) = self.triangle_pair(
+                    (&pa, &pb),
+                    (li, lj),
+                    (&ta, &tb),
+                    (rates, cd, clear),
+                    (&mut best, &mut witness, &mut normal),
+                ) {
+                    return touching;
+                }
+                continue;
+            }
+            // Descend into the larger ball (a leaf is never split).
+            let split_a = nb.leaf().is_some()
+                || (na.leaf().is_none() && na.ball.radius() >= nb.ball.radius());
+            let (left, right) = if split_a {
+                (na.left, na.right)
+            } else {
+                (nb.left, nb.right)
+            };
+            for child in [left, right] {
+                // Place the new node once; the kept one is already placed.
+                let slot = self.ws.placed.len() as u32;
+                let (pair, at) = if split_a {
+                    self.ws.placed.push(pa.place(self.a, child));
+                    ((child, j), (slot, at.1))
+                } else {
+                    self.ws.placed.push(pb.place(self.b, child));
+                    ((i, child), (at.0, slot))
+                };
+                let q = (self.ws.placed[at.0 as usize], self.ws.placed[at.1 as usize]);
+                match self.node_step(&pa, &pb, pair, q, (rates, cd, clear), best) {
+                    NodeStep::Apart { step, .. } if step >= best => self.stats.pruned += 1,
+                    found => self.ws.enqueue(Pending::new(found, pair, at)),
+                }
+            }
+        }
+        StepResult::Advance {
+            step: best,
+            witness,
+            normal,
+        }
+    }
+}

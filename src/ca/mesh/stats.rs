@@ -1,0 +1,29 @@
+//! The work counters of a mesh query.
+
+/// Work counters of a [`MeshPair`](super::MeshPair), summed over every step since the last
+/// [`MeshPair::reset_stats`](super::MeshPair::reset_stats): what a profile of the query needs.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TraversalStats {
+    /// Node pairs popped from the best-first queue and worked on (split,
+    /// settled, or a leaf pair measured; a seed's leaf pair popped again is
+    /// counted and skipped). The pair at which a descent stops is counted
+    /// in `pruned` instead.
+    pub node_pairs: u64,
+    /// Node pairs discarded because their own safe step already reached the
+    /// best step found (times the accept fraction at the queue's head), with
+    /// the pairs left in the queue when a descent stops.
+    pub pruned: u64,
+    /// Triangle pairs whose exact distance was computed (the seeds measured
+    /// before each descent included).
+    pub triangle_pairs: u64,
+    /// Directed bounds evaluated, one per body: two per node pair not
+    /// already pruned by the crude speed bound, two per leaf-pair pre-check
+    /// and two per measured triangle pair.
+    pub bounds: u64,
+    /// Node pairs far apart for their size, whose own step was taken
+    /// without splitting them ([`MeshParams::far_ratio`](super::MeshParams::far_ratio)).
+    pub settled: u64,
+    /// Child node pairs whose volumes no tested direction separates (a zero
+    /// safe step): they can only be split.
+    pub overlapping: u64,
+}

@@ -1,0 +1,265 @@
+//! One step's descent: placing nodes, the safe step of a node pair, and the
+//! exact measurement of a triangle pair (`proofs/09-ca-toi.md`, Lemmas 9.1
+//! and 9.2).
+
+use super::queue::NodeStep;
+use super::MeshPair;
+use crate::bvh::{BallTree, Leaf};
+use crate::ca::driver::gap_step;
+use crate::ca::{StepResult, Witness};
+use crate::geometry::closest::triangle_triangle;
+use crate::rounding::{gamma, gap_down, step_down, BoxError};
+use crate::{BoundKind, BoundingBall, Direction, Float, Pose, PreparedMotion, Vec3};
+
+/// What one body contributes at the current time.
+pub(super) struct Placed<'p, T> {
+    pub(super) pose: Pose<T>,
+    pub(super) motion: &'p PreparedMotion<T>,
+    pub(super) err: T,
+    pub(super) reach: T,
+    /// The rotation's error coefficients for box supports (`|w| t`).
+    pub(super) box_err: BoxError<T>,
+    /// `|v|_1` and `|w|_1` (the crude speed bound's ingredients).
+    pub(super) v_l1: T,
+    pub(super) w_l1: T,
+}
+
+/// A node placed at the current step: its centre, and its box's thinnest
+/// axis in the world frame (normalised), computed once per node per pair
+/// creation and shared by the pair's children.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct PlacedNode<T> {
+    pub(super) centre: Vec3<T>,
+    thin: Option<Direction<T>>,
+}
+
+impl<T: Float> Placed<'_, T> {
+    pub(super) fn place(&self, tree: &BallTree<T>, node: u32) -> PlacedNode<T> {
+        let n = &tree.nodes[node as usize];
+        let thin = self.pose.transform_vector(Vec3::from_array(n.obb.axes[2]));
+        PlacedNode {
+            centre: self.centre(tree, node),
+            thin: Direction::try_new_fast(thin).ok(),
+        }
+    }
+
+    /// A crude, direction-free bound on the speed of every point within
+    /// `radius` of the rotation centre: `|v| + |w| radius <= |v|_1 + |w|_1 radius`,
+    /// rounded up (at most five roundings, covered by `1 + gamma_8`). It
+    /// bounds the one-sided and the absolute speeds along any unit direction,
+    /// so a step from it is safe (Lemma 9.1) and lets a pair be pruned before
+    /// its directed bounds are computed.
+    #[inline]
+    fn crude_speed(&self, radius: T) -> T {
+        (self.v_l1 + self.w_l1 * radius) * (T::ONE + gamma::<T>(8))
+    }
+
+    fn centre(&self, tree: &BallTree<T>, node: u32) -> Vec3<T> {
+        self.pose
+            .transform_point(Vec3::from_array(*tree.nodes[node as usize].ball.centre()))
+    }
+
+    pub(super) fn corners(&self, leaf: &Leaf<T>) -> [Vec3<T>; 3] {
+        leaf.corners
+            .map(|c| self.pose.transform_point(Vec3::from_array(c)))
+    }
+
+    fn leaf_speed(&self, leaf: &Leaf<T>, n: Direction<T>, kind: BoundKind) -> T {
+        let probe = self.motion.probe(n);
+        match kind {
+            BoundKind::Nevq => probe.nevq_speed_radius(leaf.r_hat),
+            _ => probe.evq_speed_points(&leaf.corners, leaf.r_hat),
+        }
+    }
+
+    /// The one-sided rate of a leaf's corners along `n`.
+    fn leaf_rate(&self, leaf: &Leaf<T>, n: Direction<T>, kind: BoundKind) -> T {
+        self.motion
+            .probe(n)
+            .points_rate(&leaf.corners, leaf.r_hat, kind)
+    }
+}
+
+/// How a pair's closing speed along `n` (from A to B) is bounded.
+#[derive(Clone, Copy)]
+pub(super) struct Rates {
+    pub(super) kind: BoundKind,
+    pub(super) one_sided: bool,
+}
+
+impl Rates {
+    /// Bounds on the speeds of A and B whose sum bounds the rate at which
+    /// the slab between them along `n` closes: one-sided rates of A along
+    /// `n` and B along `-n` (Lemma 10.2), or the absolute speeds (Lemma 9.1).
+    fn balls<T: Float>(
+        self,
+        pa: &Placed<'_, T>,
+        pb: &Placed<'_, T>,
+        balls: (&BoundingBall<T>, &BoundingBall<T>),
+        n: Direction<T>,
+    ) -> (T, T) {
+        if self.one_sided {
+            (
+                pa.motion.probe(n).ball_rate(balls.0, self.kind),
+                pb.motion.probe(-n).ball_rate(balls.1, self.kind),
+            )
+        } else {
+            (
+                pa.motion.probe(n).ball_speed(balls.0, self.kind),
+                pb.motion.probe(n).ball_speed(balls.1, self.kind),
+            )
+        }
+    }
+
+    pub(super) fn leaves<T: Float>(
+        self,
+        pa: &Placed<'_, T>,
+        pb: &Placed<'_, T>,
+        leaves: (&Leaf<T>, &Leaf<T>),
+        n: Direction<T>,
+    ) -> (T, T) {
+        if self.one_sided {
+            (
+                pa.leaf_rate(leaves.0, n, self.kind),
+                pb.leaf_rate(leaves.1, -n, self.kind),
+            )
+        } else {
+            (
+                pa.leaf_speed(leaves.0, n, self.kind),
+                pb.leaf_speed(leaves.1, n, self.kind),
+            )
+        }
+    }
+}
+
+impl<T: Float> MeshPair<'_, T> {
+    /// The safe step of a node pair (Lemma 9.1): the largest gap between
+    /// the placed nodes along one of three directions (the line joining the
+    /// box centres, where the balls' gap counts too, and each box's thinnest
+    /// axis), over the balls' directed bounds along it.
+    ///
+    /// A pair whose certified gap is at most the contact distance (or that
+    /// no direction separates) is a [`NodeStep::Near`] candidate: triangles
+    /// below it may be within the contact distance now, so it is split
+    /// whatever its step, nearest first.
+    pub(super) fn node_step(
+        &mut self,
+        pa: &Placed<'_, T>,
+        pb: &Placed<'_, T>,
+        (i, j): (u32, u32),
+        (qa, qb): (PlacedNode<T>, PlacedNode<T>),
+        (rates, contact_distance, clearance): (Rates, T, T),
+        best_step: T,
+    ) -> NodeStep<T> {
+        let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
+        let d = qb.centre - qa.centre;
+        // The gap of the boxes along `n` (any sign of `n`: the slab between
+        // them is measured along whichever way separates).
+        let box_gap = |n: Vec3<T>| {
+            let along = d.dot(n).abs();
+            let sa = na
+                .obb
+                .support_up_with(pa.pose.inverse_transform_vector(n), &pa.box_err);
+            let sb = nb
+                .obb
+                .support_up_with(pb.pose.inverse_transform_vector(n), &pb.box_err);
+            along - sa - sb
+        };
+        let mut best: Option<(T, Direction<T>)> = None;
+        let mut consider = |n: Direction<T>, gap: T| {
+            if gap > T::ZERO && best.is_none_or(|(g, _)| gap > g) {
+                best = Some((gap, n));
+            }
+        };
+        if let Ok(n) = Direction::try_new_fast(d) {
+            let ball_gap = d.dot(n.get()) - na.ball.radius() - nb.ball.radius();
+            consider(n, ball_gap.max_nan(box_gap(n.get())));
+        }
+        for n in [qa.thin, qb.thin].into_iter().flatten() {
+            consider(n, box_gap(n.get()));
+        }
+        let Some((gap, n)) = best else {
+            self.stats.overlapping += 1;
+            return NodeStep::Near(-T::INFINITY);
+        };
+        // The certified gap (section "Gap"): below the contact distance the
+        // pair is a candidate for contact now.
+        let g = gap_down(gap, pa.err, pb.err, pa.reach + pb.reach);
+        if g.is_nan() || g <= contact_distance {
+            return NodeStep::Near(g);
+        }
+        // Orient n from A to B: the slab gap is measured along it.
+        let n = if d.dot(n.get()) < T::ZERO { -n } else { n };
+        let far = gap >= self.far_ratio * (na.ball.radius() + nb.ball.radius());
+        // A pair whose step under the crude bound already reaches the best
+        // step cannot limit it: no directed bound needed.
+        let lower = step_down(
+            g,
+            clearance,
+            pa.crude_speed(na.ball.outer_radius_up()),
+            pb.crude_speed(nb.ball.outer_radius_up()),
+        );
+        if lower >= best_step {
+            return NodeStep::Apart { step: lower, far };
+        }
+        self.stats.bounds += 2;
+        let (mu_a, mu_b) = rates.balls(pa, pb, (&na.ball, &nb.ball), n);
+        NodeStep::Apart {
+            step: step_down(g, clearance, mu_a, mu_b),
+            far,
+        }
+    }
+
+    /// Measures one triangle pair (leaf indices `i` in A, `j` in B): its
+    /// exact distance (a witness) and, when it is apart, its own safe step
+    /// along its closest direction, folded into `best` (Lemma 9.1). Returns
+    /// the step's result when the pair is within the contact distance.
+    pub(super) fn triangle_pair(
+        &mut self,
+        (pa, pb): (&Placed<'_, T>, &Placed<'_, T>),
+        (i, j): (usize, usize),
+        (ta, tb): (&[Vec3<T>; 3], &[Vec3<T>; 3]),
+        (rates, contact_distance, clearance): (Rates, T, T),
+        (best, witness, normal): (&mut T, &mut Option<Witness<T>>, &mut Option<Vec3<T>>),
+    ) -> Option<StepResult<T>> {
+        let (la, lb) = (&self.a.leaves[i], &self.b.leaves[j]);
+        self.stats.triangle_pairs += 1;
+        let cp = triangle_triangle(ta, tb);
+        let w = Witness {
+            distance: cp.distance,
+            on_a: cp.on_a,
+            on_b: cp.on_b,
+        };
+        let dir = Direction::try_new(cp.on_b - cp.on_a);
+        if witness.is_none_or(|b: Witness<T>| w.distance < b.distance) {
+            *witness = Some(w);
+            self.closest = Some((la.triangle, lb.triangle));
+        }
+        let (Ok(n), true) = (dir, cp.distance > contact_distance) else {
+            self.closest = Some((la.triangle, lb.triangle));
+            return Some(StepResult::Touching {
+                witness: w,
+                normal: dir.ok().map(Direction::get),
+            });
+        };
+        let nv = n.get();
+        self.stats.bounds += 2;
+        let mu = rates.leaves(pa, pb, (la, lb), n);
+        let gap = slab_gap(ta, tb, nv);
+        let (step, _) = gap_step(gap, clearance, (pa.err, pb.err), (pa.reach, pb.reach), mu);
+        self.seeds.insert(step.to_f64(), (i as u32, j as u32));
+        if step < *best {
+            *best = step;
+            *normal = Some(nv);
+        }
+        None
+    }
+}
+
+/// The slab between two placed triangles along `n`: `min_B q.n - max_A p.n`.
+#[inline]
+pub(super) fn slab_gap<T: Float>(ta: &[Vec3<T>; 3], tb: &[Vec3<T>; 3], n: Vec3<T>) -> T {
+    let lo_b = tb[0].dot(n).min_nan(tb[1].dot(n)).min_nan(tb[2].dot(n));
+    let hi_a = ta[0].dot(n).max_nan(ta[1].dot(n)).max_nan(ta[2].dot(n));
+    lo_b - hi_a
+}
