@@ -22,6 +22,12 @@ pub enum Quantity {
     Radius,
     /// A rigid placement (rotation matrix or translation).
     Pose,
+    /// A body's orientation (a quaternion).
+    Orientation,
+    /// The rotation centre in the body frame (parry's `local_center`).
+    LocalCentre,
+    /// A motion's duration.
+    Duration,
 }
 
 /// Why an input was rejected.
@@ -47,6 +53,10 @@ pub enum InputError {
     ReversedInterval,
     /// A sub-interval that is not inside the motion's interval.
     NotASubInterval,
+    /// A quaternion of length zero (no rotation).
+    ZeroQuaternion,
+    /// A duration that is zero or negative.
+    NonPositiveDuration,
 }
 
 impl fmt::Display for Quantity {
@@ -60,6 +70,9 @@ impl fmt::Display for Quantity {
             Self::Vertex(i) => write!(f, "vertex {i}"),
             Self::Radius => f.write_str("radius"),
             Self::Pose => f.write_str("pose"),
+            Self::Orientation => f.write_str("orientation"),
+            Self::LocalCentre => f.write_str("local rotation centre"),
+            Self::Duration => f.write_str("duration"),
         }
     }
 }
@@ -76,6 +89,8 @@ impl fmt::Display for InputError {
             Self::NotASubInterval => {
                 f.write_str("sub-interval is not inside the motion's interval")
             }
+            Self::ZeroQuaternion => f.write_str("quaternion has zero length"),
+            Self::NonPositiveDuration => f.write_str("duration is not positive"),
         }
     }
 }

@@ -177,8 +177,10 @@ pub use float::Float;
 pub use geometry::closest::{point_triangle, segment_segment, triangle_triangle, ClosestPoints};
 pub use geometry::gjk::{gjk_distance, ConvexPolytope, GjkParams, GjkResult, SupportMap};
 pub use math::direction::Direction;
+pub use math::isometry::Isometry;
 pub use math::point::{BodyPoint, Point3};
 pub use math::pose::Pose;
+pub use math::quaternion::Rotation;
 pub use math::rotation::{rotate_about_axis, RotationPlane};
 pub use math::vec3::Vec3;
 #[cfg(feature = "obj")]

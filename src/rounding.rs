@@ -112,6 +112,58 @@ pub(crate) fn one_sided_up<T: Float>(a: T, a_mag: T, rot: T, mag: T, margin: T) 
     }
 }
 
+/// Section "Orientation": an upper bound of the spectral norm of the
+/// difference between a [`Rotation`](crate::Rotation)'s computed matrix and
+/// the exact rotation of its exactly normalised quaternion,
+/// `||M - Q|| <= 80 u` (plus `16 eta` for components that underflow).
+#[inline]
+#[must_use]
+pub(crate) fn orientation_error<T: Float>() -> T {
+    T::from_u32(80) * T::UNIT_ROUNDOFF
+}
+
+/// Section "Orientation": the coefficient `k` of the frame margin `k R` that
+/// the EVQ bounds (absolute and one-sided) add for points within `R` (the
+/// lever radius, `|r - c| <= R`) of the rotation centre, when they are
+/// evaluated with the body-frame `fl(M^T n)` and `fl(M^T w)` of an oriented
+/// motion, and with the points' offsets `fl(r - c)` from a rotation centre
+/// `c` off the body origin:
+/// `k = u W ((192 + 96 theta_m) [oriented] + 2 [offset]) (1 + gamma_4) + 8 eta`,
+/// with `W = fl(|M^T w|_1)` and `theta_m` the arc's largest angle. `0` when
+/// neither applies (the bounds are then exactly those of the world frame).
+#[inline]
+#[must_use]
+pub(crate) fn frame_margin_up<T: Float>(w_l1: T, theta_m: T, oriented: bool, offset: bool) -> T {
+    let turned = if oriented {
+        T::from_u32(192) + T::from_u32(96) * theta_m
+    } else {
+        T::ZERO
+    };
+    let c = turned + if offset { T::TWO } else { T::ZERO };
+    if c == T::ZERO {
+        return T::ZERO;
+    }
+    let k = T::UNIT_ROUNDOFF * w_l1 * c * (T::ONE + gamma::<T>(4)) + T::from_u32(8) * T::ETA;
+    if k.is_nan() {
+        T::INFINITY
+    } else {
+        k
+    }
+}
+
+/// Section "Orientation": a lever radius `(r_hat + c_hat)(1 + gamma_2)` that
+/// bounds `|r - c|` for every point within `r_hat` of the body origin and a
+/// rotation centre `c` within `c_hat` of it; exactly `r_hat` when `c_hat = 0`.
+#[inline]
+#[must_use]
+pub(crate) fn lever_up<T: Float>(r_hat: T, c_hat: T) -> T {
+    if c_hat == T::ZERO {
+        r_hat
+    } else {
+        (r_hat + c_hat) * (T::ONE + gamma::<T>(2))
+    }
+}
+
 /// Section "Assembly": the final factor `1 + gamma_16` covers the direction's
 /// normalisation (`1/|n| <= 1 + gamma_5`) and the rounding of the evaluation
 /// of the non-negative margin expression (at most 10 operations). A NaN can
@@ -144,18 +196,22 @@ pub(crate) fn displacement_up<T: Float>(speed: T, length: T) -> T {
     }
 }
 
-/// `proofs/floating-point.md`, section "Pose": an upper bound of the distance
-/// between a body point placed by [`Pose`](crate::Pose) in floating point
-/// (`RigidMotion::pose_at` then `transform_point`) and its exact position,
-/// `delta <= u ((8 |a| + 96) R + 8 P) + 8 eta`, for a body within `R` of its
-/// rotation centre, rotated by the angle `a = |w| t`, whose centre lies within
-/// `P >= |x0| + |v| |t|` of the origin. Rounded up by its own `1 + gamma_8`.
+/// `proofs/floating-point.md`, sections "Pose" and "Orientation": an upper
+/// bound of the distance between a body point placed by [`Pose`](crate::Pose)
+/// in floating point (`RigidMotion::pose_at` then `transform_point`) and its
+/// exact position, `delta <= u ((8 |a| + K) R + 8 P) + 8 eta`, for a body
+/// point within `R` of its rotation centre (the lever radius), rotated by the
+/// angle `a = |w| t`, whose rotation centre lies within `P >= |x0| + |v| |t|`
+/// of the origin (plus `|c|` for a rotation centre `c` off the body origin),
+/// with `K = pose_rotation_constant(oriented)`: `96` for the identity start
+/// orientation, `192` with a start orientation (its matrix's error and the
+/// product's rounding). Rounded up by its own `1 + gamma_8`.
 #[inline]
 #[must_use]
-pub(crate) fn pose_error_up<T: Float>(angle: T, radius: T, centre_reach: T) -> T {
+pub(crate) fn pose_error_up<T: Float>(angle: T, radius: T, centre_reach: T, oriented: bool) -> T {
     let u = T::UNIT_ROUNDOFF;
     let e = u
-        * ((T::from_u32(8) * angle.abs() + T::from_u32(96)) * radius
+        * ((T::from_u32(8) * angle.abs() + pose_rotation_constant::<T>(oriented)) * radius
             + T::from_u32(8) * centre_reach)
         + T::from_u32(8) * T::ETA;
     let e = e * (T::ONE + gamma::<T>(8));
@@ -166,6 +222,16 @@ pub(crate) fn pose_error_up<T: Float>(angle: T, radius: T, centre_reach: T) -> T
     }
 }
 
+/// Sections "Pose" and "Orientation": the constant `K` of the rotation's
+/// error `||P^ - R(a) Q0|| <= u (6 |a| + K - 12)` and of [`pose_error_up`]:
+/// `96` without a start orientation, `192` with one (its matrix errs by
+/// `80 u`, the product `fl(R^ M)` by `12 u`).
+#[inline]
+#[must_use]
+pub(crate) fn pose_rotation_constant<T: Float>(oriented: bool) -> T {
+    T::from_u32(if oriented { 192 } else { 96 })
+}
+
 /// Section "Box": an upper bound of the exact support `sum_k h_k |(R^T n)_k|`
 /// of a body-frame box of half extents `h` placed by the computed rotation,
 /// from the computed `supp^ = fl(sum_k h_k |fl(R^T n)_k|)`:
@@ -173,14 +239,15 @@ pub(crate) fn pose_error_up<T: Float>(angle: T, radius: T, centre_reach: T) -> T
 #[cfg(test)]
 #[inline]
 #[must_use]
-pub(crate) fn box_support_up<T: Float>(supp: T, half_l1: T, angle: T) -> T {
+pub(crate) fn box_support_up<T: Float>(supp: T, half_l1: T, angle: T, oriented: bool) -> T {
     supp * (T::ONE + gamma::<T>(4))
-        + pose_error_up(angle, half_l1, T::ZERO)
+        + pose_error_up(angle, half_l1, T::ZERO, oriented)
         + gamma::<T>(8) * half_l1
 }
 
 /// Section "Oriented box": `box_support_up` with its angle-dependent part
-/// computed once per placement. With `k = (u (8 |a| + 96)(1 + gamma_8) + gamma_8)(1 + gamma_12)`
+/// computed once per placement. With `k = (u (8 |a| + K)(1 + gamma_8) + gamma_8)(1 + gamma_12)`
+/// (`K` from [`pose_rotation_constant`])
 /// and `k0 = 32 eta`, `supp^ (1 + gamma_7) + w k + k0` is at least
 /// `box_support_up(supp^, w, a)` evaluated exactly (the extra factors cover
 /// the evaluation of `k` and of the three-term sum), so the same bound holds.
@@ -193,11 +260,14 @@ pub(crate) struct BoxError<T> {
 
 #[cfg(feature = "alloc")]
 impl<T: Float> BoxError<T> {
-    /// The coefficients for a rotation by the angle `angle`.
+    /// The coefficients for a rotation by the angle `angle`, after a start
+    /// orientation if `oriented`.
     #[inline]
-    pub(crate) fn new(angle: T) -> Self {
+    pub(crate) fn new(angle: T, oriented: bool) -> Self {
         let u = T::UNIT_ROUNDOFF;
-        let k = (u * (T::from_u32(8) * angle.abs() + T::from_u32(96)) * (T::ONE + gamma::<T>(8))
+        let k = (u
+            * (T::from_u32(8) * angle.abs() + pose_rotation_constant::<T>(oriented))
+            * (T::ONE + gamma::<T>(8))
             + gamma::<T>(8))
             * (T::ONE + gamma::<T>(12));
         Self {
@@ -341,20 +411,23 @@ mod tests {
         // `BoxError` is `box_support_up` with the angle's part hoisted: never
         // below it (the exact claim of `proofs/floating-point.md`,
         // "Oriented box"), for small and large angles, weights and supports.
-        for &a in &[0.0, 1e-9, 0.5, 3.0, 1e3, 1e12] {
-            let e = super::BoxError::<f64>::new(a);
-            for &w in &[0.0, 1e-300, 1e-8, 0.7, 1e6] {
-                for &s in &[0.0, 1e-12, 1.0, 3e5] {
-                    let (new, old) = (e.support_up(s, w), super::box_support_up(s, w, a));
-                    assert!(new >= old, "a {a} w {w} s {s}: {new} < {old}");
+        for oriented in [false, true] {
+            for &a in &[0.0, 1e-9, 0.5, 3.0, 1e3, 1e12] {
+                let e = super::BoxError::<f64>::new(a, oriented);
+                for &w in &[0.0, 1e-300, 1e-8, 0.7, 1e6] {
+                    for &s in &[0.0, 1e-12, 1.0, 3e5] {
+                        let (new, old) =
+                            (e.support_up(s, w), super::box_support_up(s, w, a, oriented));
+                        assert!(new >= old, "a {a} w {w} s {s}: {new} < {old}");
+                    }
                 }
+                let e = super::BoxError::<f32>::new(a as f32, oriented);
+                let (new, old) = (
+                    e.support_up(1.0, 0.5),
+                    super::box_support_up(1.0f32, 0.5, a as f32, oriented),
+                );
+                assert!(new >= old, "f32 a {a}: {new} < {old}");
             }
-            let e = super::BoxError::<f32>::new(a as f32);
-            let (new, old) = (
-                e.support_up(1.0, 0.5),
-                super::box_support_up(1.0f32, 0.5, a as f32),
-            );
-            assert!(new >= old, "f32 a {a}: {new} < {old}");
         }
     }
 

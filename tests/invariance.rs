@@ -8,7 +8,8 @@ use approx::{assert_relative_eq, relative_eq};
 use common::{case_spec, cases};
 use motion_bound::testkit::Case;
 use motion_bound::{
-    evq, nevq, rotate_about_axis, Direction, Point3, RigidMotion, TimeInterval, Vec3, VertexSet,
+    evq, nevq, rotate_about_axis, Direction, Point3, RigidMotion, Rotation, TimeInterval, Vec3,
+    VertexSet,
 };
 use proptest::prelude::*;
 
@@ -30,14 +31,30 @@ fn transformed(case: &Case<f64>, axis: Vec3<f64>, angle: f64, shift: Vec3<f64>) 
         m.interval(),
     )
     .unwrap();
-    Case {
-        vertices: case
-            .vertices
-            .iter()
-            .map(|r| q(Vec3::from_array(*r)).to_array())
-            .collect(),
-        motion,
-        n: Direction::try_new(q(case.n.get())).unwrap(),
+    if m.orientation().is_identity() {
+        // Body points in the world frame: rotate them.
+        Case {
+            vertices: case
+                .vertices
+                .iter()
+                .map(|r| q(Vec3::from_array(*r)).to_array())
+                .collect(),
+            motion,
+            n: Direction::try_new(q(case.n.get())).unwrap(),
+        }
+    } else {
+        // A turned body: the points stay in its frame, its orientation
+        // turns with the world.
+        let g = Rotation::try_from_axis_angle(axis, angle).unwrap();
+        let motion = motion
+            .with_orientation(g * m.orientation())
+            .try_with_local_centre(m.local_centre())
+            .unwrap();
+        Case {
+            vertices: case.vertices.clone(),
+            motion,
+            n: Direction::try_new(q(case.n.get())).unwrap(),
+        }
     }
 }
 
@@ -50,6 +67,9 @@ fn scaled_motion(case: &Case<f64>, lambda: f64, size: f64) -> Case<f64> {
         m.angular() * lambda,
         TimeInterval::try_new(iv.start() / lambda, iv.end() / lambda).unwrap(),
     )
+    .unwrap()
+    .with_orientation(m.orientation())
+    .try_with_local_centre(m.local_centre() * size)
     .unwrap();
     Case {
         vertices: case.vertices.iter().map(|r| r.map(|x| x * size)).collect(),

@@ -14,7 +14,8 @@ use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 
 /// The absolute bound plus the difference of the two bounds' rounding
-/// margins, `64 u (sum_k |v_k n_k| + (|n x w| + |w|_1) R) + 64 eta`: the one-sided
+/// margins, `64 u (sum_k |v_k n_k| + (|n x w| + |w|_1) R) + 64 eta` (`R` the
+/// largest distance from the rotation centre): the one-sided
 /// bound is never looser than the absolute one beyond that
 /// (`proofs/10-one-sided.md`, "Floating point").
 fn slack_above<T: Float>(abs: T, motion: &RigidMotion<T>, n: Direction<T>, radius: f64) -> f64 {
@@ -44,7 +45,9 @@ fn signed_sound<T: Float, R: Real>(spec: &CaseSpec, grow: f64) -> Result<(), Tes
                 rate.to_f64()
             );
             let abs = probe.speed(&body, kind);
-            let r = body.summary().max_radius().to_f64();
+            // R bounds the distance from the rotation centre (the body
+            // origin's distance plus the local centre's).
+            let r = body.summary().max_radius().to_f64() + case.motion.local_reach().to_f64();
             prop_assert!(
                 rate.to_f64() <= slack_above(abs, &case.motion, n, r),
                 "{kind:?} rate {rate:?} above the absolute bound {abs:?}"
@@ -73,7 +76,7 @@ fn signed_sound<T: Float, R: Real>(spec: &CaseSpec, grow: f64) -> Result<(), Tes
                 "{kind:?} ball rate below its vertices' sup"
             );
             let abs = probe.ball_speed(&ball, kind);
-            let r = ball.outer_radius_up().to_f64();
+            let r = ball.outer_radius_up().to_f64() + case.motion.local_reach().to_f64();
             prop_assert!(
                 rate.to_f64() <= slack_above(abs, &case.motion, n, r),
                 "{kind:?} ball rate {rate:?} above {abs:?}"

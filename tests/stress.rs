@@ -7,7 +7,7 @@
 mod common;
 
 use common::Oracle;
-use motion_bound::testkit::{CaseSpec, Layout, Normal, SplitMix64, Sweep};
+use motion_bound::testkit::{BodyFrame, CaseSpec, Layout, Normal, SplitMix64, Sweep};
 use motion_bound::{evq, nevq, VertexSet};
 
 #[derive(Default)]
@@ -79,6 +79,16 @@ fn specs() -> Vec<CaseSpec> {
                                 normal,
                                 linear: rng.vec3(),
                                 linear_exp: 0,
+                                frame: if layout == Layout::Blob {
+                                    BodyFrame::Oriented([
+                                        rng.signed_unit(),
+                                        rng.signed_unit(),
+                                        rng.signed_unit(),
+                                        rng.signed_unit(),
+                                    ])
+                                } else {
+                                    BodyFrame::World
+                                },
                             });
                         }
                     }

@@ -10,7 +10,7 @@
 //! its elements, and a `Vec` (not in last position) as `1, element` per
 //! element followed by a `0`.
 
-use motion_bound::testkit::{CaseSpec, Layout, Normal, Sweep};
+use motion_bound::testkit::{BodyFrame, CaseSpec, Layout, Normal, Sweep};
 
 use crate::inputs::{MotionCase, MotionInput, Precisions, RawInput, ValidationCase};
 use crate::{Num, Precision};
@@ -106,6 +106,23 @@ pub fn case_spec(e: &mut Enc, s: &CaseSpec) {
         Normal::Orthogonal(v) => e.variant(3, 4).f64x3(v),
     };
     e.f64x3(s.linear).i8(s.linear_exp);
+    match s.frame {
+        BodyFrame::World => e.variant(0, 3),
+        BodyFrame::Oriented(q) => {
+            e.variant(1, 3);
+            q.iter().for_each(|&x| {
+                e.f64(x);
+            });
+            e
+        }
+        BodyFrame::OrientedAbout(q, c) => {
+            e.variant(2, 3);
+            q.iter().for_each(|&x| {
+                e.f64(x);
+            });
+            e.f64x3(c)
+        }
+    };
 }
 
 /// A float type `arbitrary` encodes by its bits.
@@ -234,6 +251,7 @@ pub fn base_spec() -> CaseSpec {
         normal: Normal::Free([0.6, 0.7, -0.2]),
         linear: [0.2, -0.1, 0.05],
         linear_exp: 0,
+        frame: BodyFrame::World,
     }
 }
 
@@ -332,6 +350,20 @@ pub fn hard_specs() -> Vec<(String, CaseSpec)> {
             s.sweep = Sweep::NearMultipleOfPi { k: 0, ulps: 1 };
         }),
         ("no-linear", |s| s.linear = [0.0; 3]),
+        ("oriented", |s| {
+            s.frame = BodyFrame::Oriented([0.3, -0.5, 0.7, 0.2]);
+        }),
+        ("oriented-about-off-centre", |s| {
+            s.frame = BodyFrame::OrientedAbout([-0.9, 0.1, 0.3, -0.2], [0.8, -0.3, 0.5]);
+            s.sweep = Sweep::NearMultipleOfPi { k: 1, ulps: -1 };
+        }),
+        ("oriented-near-parallel", |s| {
+            s.frame = BodyFrame::Oriented([0.5, 0.5, -0.5, 0.5]);
+            s.normal = Normal::NearlyParallel {
+                towards: [0.0, 1.0, 0.0],
+                ulps: 2,
+            };
+        }),
         ("linear-dominates", |s| s.linear_exp = 6),
         ("linear-negligible", |s| s.linear_exp = -6),
         ("linear-along-n", |s| {

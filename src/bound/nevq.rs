@@ -1,6 +1,7 @@
 //! The NEVQ bound: the seed's Eq. 3.
 
 use crate::bound::projection::{nevq_speed_from, Projection};
+use crate::rounding::lever_up;
 use crate::{BodySummary, DirectedBound, Direction, Float, RigidMotion};
 
 /// The seed's Eq. 3, `mu = |v.n| + |n x w| max_i |r_i|`, rounded up.
@@ -34,7 +35,7 @@ pub fn nevq<T: Float>(
 #[must_use]
 pub fn nevq_speed<T: Float>(body: &BodySummary<T>, motion: &RigidMotion<T>, n: Direction<T>) -> T {
     let p = Projection::new(motion, n);
-    nevq_speed_from(&p, body.max_radius())
+    nevq_speed_from(&p, lever_up(body.max_radius(), motion.local_reach()))
 }
 
 /// The NEVQ speed in plain floating point, without any rounding margin:

@@ -4,7 +4,8 @@
 use crate::bound::projection::{nevq_speed_from, Projection};
 use crate::bound::scan::{arc_scan, arc_signed_scan, full_turn_scan};
 use crate::rounding::{
-    assemble, evq_rotational_up, gamma, nevq_rotational_up, one_sided_decision_slack, one_sided_up,
+    assemble, evq_rotational_up, gamma, lever_up, nevq_rotational_up, one_sided_decision_slack,
+    one_sided_up,
 };
 use crate::{
     BodySummary, BoundKind, BoundingBall, Direction, Float, PreparedMotion, SweptArc, Vec3,
@@ -27,14 +28,28 @@ pub struct DirectedProbe<T> {
     usable: bool,
     e1: Vec3<T>,
     e2: Vec3<T>,
+    /// The rotation centre in the body frame, subtracted from every point.
+    offset: Vec3<T>,
+    /// `|offset|` rounded up.
+    offset_up: T,
+    /// The frame margin's coefficient (`rounding::frame_margin_up`).
+    frame_margin: T,
 }
 
 impl<T: Float> PreparedMotion<T> {
-    /// The probe of this motion along `n`.
+    /// The probe of this motion along `n`: `O(1)`, with `n` taken into the
+    /// body frame (`Q0^T n`) for an oriented motion.
     #[inline]
     #[must_use]
     pub fn probe(&self, n: Direction<T>) -> DirectedProbe<T> {
-        let p = Projection::new(self.motion(), n);
+        let m = self.motion();
+        let orientation = m.orientation();
+        let body = if orientation.is_identity() {
+            None
+        } else {
+            Some((orientation.inverse_rotate(n.get()), self.body_angular()))
+        };
+        let p = Projection::with_frame(m.linear(), n.get(), body, m.angular());
         let arc = *self.arc();
         let usable = arc.rotating && p.c_norm > T::TINY_LENGTH;
         let (e1, e2) = if usable && !arc.full_turn {
@@ -49,6 +64,9 @@ impl<T: Float> PreparedMotion<T> {
             usable,
             e1,
             e2,
+            offset: m.local_centre(),
+            offset_up: m.local_reach(),
+            frame_margin: self.frame_margin,
         }
     }
 }
@@ -65,7 +83,7 @@ impl<T: Float> DirectedProbe<T> {
     #[inline]
     #[must_use]
     pub fn nevq_speed(&self, body: &BodySummary<T>) -> T {
-        nevq_speed_from(&self.p, body.max_radius())
+        nevq_speed_from(&self.p, lever_up(body.max_radius(), self.offset_up))
     }
 
     /// The EVQ speed bound of a vertex set (as [`evq_speed`](crate::evq_speed)).
@@ -74,12 +92,13 @@ impl<T: Float> DirectedProbe<T> {
         self.evq_speed_points(body.vertices(), body.summary().max_radius())
     }
 
-    /// EVQ over `points`, all within `r_hat` of the rotation centre (`r_hat`
+    /// EVQ over `points`, all within `r_hat` of the body origin (`r_hat`
     /// rounded up as by `rounding::radius_up`).
     #[inline]
     pub(crate) fn evq_speed_points(&self, points: &[[T; 3]], r_hat: T) -> T {
-        let nevq = nevq_speed_from(&self.p, r_hat);
-        match self.extremal_sq(points, r_hat * r_hat) {
+        let lever = lever_up(r_hat, self.offset_up);
+        let nevq = nevq_speed_from(&self.p, lever);
+        match self.extremal_sq(points, lever * lever) {
             None => nevq,
             Some(e_sq) => {
                 let rot = evq_rotational_up(
@@ -87,18 +106,31 @@ impl<T: Float> DirectedProbe<T> {
                     e_sq.sqrt(),
                     self.arc.theta_m,
                     self.p.w_l1,
-                    r_hat,
+                    lever,
                 );
-                assemble(self.p.linear_up(), rot).min_nan(nevq)
+                assemble(self.p.linear_up(), self.with_frame_margin(rot, lever)).min_nan(nevq)
             }
         }
     }
 
-    /// NEVQ for points within `r_hat` of the rotation centre.
+    /// `rot` plus the frame margin for points within `lever` of the
+    /// rotation centre (`proofs/floating-point.md`, "Orientation"): the sum
+    /// is one addition deeper than "Assembly" budgets, so it is rounded up by
+    /// `1 + gamma_2` as in section "Ball". Unchanged when there is no margin.
+    #[inline]
+    fn with_frame_margin(&self, rot: T, lever: T) -> T {
+        if self.frame_margin == T::ZERO {
+            rot
+        } else {
+            (rot + self.frame_margin * lever) * (T::ONE + gamma::<T>(2))
+        }
+    }
+
+    /// NEVQ for points within `r_hat` of the body origin.
     #[cfg(feature = "alloc")]
     #[inline]
     pub(crate) fn nevq_speed_radius(&self, r_hat: T) -> T {
-        nevq_speed_from(&self.p, r_hat)
+        nevq_speed_from(&self.p, lever_up(r_hat, self.offset_up))
     }
 
     /// The speed bound of kind `kind` for a vertex set.
@@ -133,27 +165,26 @@ impl<T: Float> DirectedProbe<T> {
     #[must_use]
     pub fn ball_speed(&self, ball: &BoundingBall<T>, kind: BoundKind) -> T {
         let linear = self.p.linear_up();
-        let nevq = assemble(
-            linear,
-            nevq_rotational_up(self.p.c_norm, self.p.w_l1, ball.outer_radius_up()),
-        );
+        let nevq = nevq_speed_from(&self.p, lever_up(ball.outer_radius_up(), self.offset_up));
         if kind == BoundKind::Nevq {
             return nevq;
         }
         let Some(e_sq) = self.extremal_sq(core::slice::from_ref(ball.centre()), T::INFINITY) else {
             return nevq;
         };
+        let lever = lever_up(ball.centre_norm_up(), self.offset_up);
         let centre = evq_rotational_up(
             self.p.c_norm,
             e_sq.sqrt(),
             self.arc.theta_m,
             self.p.w_l1,
-            ball.centre_norm_up(),
+            lever,
         );
         let rim = nevq_rotational_up(self.p.c_norm, self.p.w_l1, ball.radius());
         // One more addition and one more product than "Assembly" budgets:
         // `proofs/floating-point.md`, section "Ball".
         let rot = (centre + rim) * (T::ONE + gamma::<T>(2));
+        let rot = self.with_frame_margin(rot, lever + ball.radius());
         assemble(linear, rot).min_nan(nevq)
     }
 
@@ -186,19 +217,27 @@ impl<T: Float> DirectedProbe<T> {
     /// ```
     #[must_use]
     pub fn ball_rate(&self, ball: &BoundingBall<T>, kind: BoundKind) -> T {
-        let nevq_rot = nevq_rotational_up(self.p.c_norm, self.p.w_l1, ball.outer_radius_up());
-        let nevq = one_sided_up(self.p.a, self.p.a_mag, nevq_rot, nevq_rot, T::ZERO);
+        let nevq = self.nevq_rate(lever_up(ball.outer_radius_up(), self.offset_up));
         if kind == BoundKind::Nevq || !self.usable {
             return nevq;
         }
-        let r_hat = ball.centre_norm_up();
-        let s = self.signed_extremal(core::slice::from_ref(ball.centre()), r_hat);
+        let lever = lever_up(ball.centre_norm_up(), self.offset_up);
+        let s = self.signed_extremal(core::slice::from_ref(ball.centre()), lever);
         // The centre's term: |c| S^ and its error; the rim adds |c| rho.
         let margin =
-            evq_rotational_up(self.p.c_norm, T::ZERO, self.arc.theta_m, self.p.w_l1, r_hat)
+            evq_rotational_up(self.p.c_norm, T::ZERO, self.arc.theta_m, self.p.w_l1, lever)
                 + nevq_rotational_up(self.p.c_norm, self.p.w_l1, ball.radius());
+        let margin = self.with_frame_margin(margin, lever + ball.radius());
         let rot = self.p.c_norm * s;
         one_sided_up(self.p.a, self.p.a_mag, rot, rot.abs(), margin).min_nan(nevq)
+    }
+
+    /// The one-sided NEVQ bound `a + |n x w| R` for points within `lever`
+    /// of the rotation centre, rounded up (`proofs/10-one-sided.md`).
+    #[inline]
+    fn nevq_rate(&self, lever: T) -> T {
+        let rot = nevq_rotational_up(self.p.nevq_c_norm, self.p.nevq_w_l1, lever);
+        one_sided_up(self.p.a, self.p.a_mag, rot, rot, T::ZERO)
     }
 
     /// The one-sided speed bound of kind `kind` for a vertex set (see
@@ -209,55 +248,66 @@ impl<T: Float> DirectedProbe<T> {
         self.points_rate(body.vertices(), body.summary().max_radius(), kind)
     }
 
-    /// [`rate`](Self::rate) over `points`, all within `r_hat` of the
-    /// rotation centre (`r_hat` rounded up as by `rounding::radius_up`).
+    /// [`rate`](Self::rate) over `points`, all within `r_hat` of the body
+    /// origin (`r_hat` rounded up as by `rounding::radius_up`).
     #[inline]
     pub(crate) fn points_rate(&self, points: &[[T; 3]], r_hat: T, kind: BoundKind) -> T {
-        let nevq_rot = nevq_rotational_up(self.p.c_norm, self.p.w_l1, r_hat);
-        let nevq = one_sided_up(self.p.a, self.p.a_mag, nevq_rot, nevq_rot, T::ZERO);
+        let lever = lever_up(r_hat, self.offset_up);
+        let nevq = self.nevq_rate(lever);
         if kind == BoundKind::Nevq || !self.usable || points.is_empty() {
             return nevq;
         }
-        let s = self.signed_extremal(points, r_hat);
+        let s = self.signed_extremal(points, lever);
         let margin =
-            evq_rotational_up(self.p.c_norm, T::ZERO, self.arc.theta_m, self.p.w_l1, r_hat);
+            evq_rotational_up(self.p.c_norm, T::ZERO, self.arc.theta_m, self.p.w_l1, lever);
+        let margin = self.with_frame_margin(margin, lever);
         let rot = self.p.c_norm * s;
         one_sided_up(self.p.a, self.p.a_mag, rot, rot.abs(), margin).min_nan(nevq)
     }
 
-    /// `S^ = max_i max_arc u . q_i` (signed) over `points` within `r_hat`
-    /// of the rotation centre; only called when the rotation is trusted.
+    /// `S^ = max_i max_arc u . q_i` (signed) over `points` (offsets from the
+    /// rotation centre within `lever`); only called when the rotation is
+    /// trusted.
     #[inline]
-    fn signed_extremal(&self, points: &[[T; 3]], r_hat: T) -> T {
+    fn signed_extremal(&self, points: &[[T; 3]], lever: T) -> T {
         if self.arc.full_turn {
             // Every point's direction is reached: its distance from the axis.
-            full_turn_scan(points, self.arc.axis, T::INFINITY).map_or(T::INFINITY, |sq| sq.sqrt())
+            full_turn_scan(points, self.offset, self.arc.axis, T::INFINITY)
+                .map_or(T::INFINITY, |sq| sq.sqrt())
         } else {
             let slack =
-                one_sided_decision_slack(self.p.c_norm, self.arc.theta_m, self.p.w_l1, r_hat);
+                one_sided_decision_slack(self.p.c_norm, self.arc.theta_m, self.p.w_l1, lever);
             arc_signed_scan(
                 points,
+                self.offset,
                 self.e1,
                 self.e2,
-                self.arc.ua,
-                self.arc.ub,
+                (self.arc.ua, self.arc.ub),
                 self.p.c_norm,
                 slack,
             )
         }
     }
 
-    /// `E^2 = max_i max_arc (u . q_i)^2` over `points`, or `None` when the EVQ
-    /// term is not used (no trusted rotation) or a point reaches `stop_sq`.
+    /// `E^2 = max_i max_arc (u . q_i)^2` over `points` (as offsets from the
+    /// rotation centre), or `None` when the EVQ term is not used (no trusted
+    /// rotation) or a point reaches `stop_sq`.
     #[inline]
     pub(crate) fn extremal_sq(&self, points: &[[T; 3]], stop_sq: T) -> Option<T> {
         if !self.usable {
             return None;
         }
         if self.arc.full_turn {
-            full_turn_scan(points, self.arc.axis, stop_sq)
+            full_turn_scan(points, self.offset, self.arc.axis, stop_sq)
         } else {
-            arc_scan(points, self.e1, self.e2, self.arc.ua, self.arc.ub, stop_sq)
+            arc_scan(
+                points,
+                self.offset,
+                self.e1,
+                self.e2,
+                (self.arc.ua, self.arc.ub),
+                stop_sq,
+            )
         }
     }
 

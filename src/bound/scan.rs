@@ -9,12 +9,13 @@ use crate::{Float, Vec3};
 #[inline]
 pub(crate) fn full_turn_scan<T: Float>(
     vertices: &[[T; 3]],
+    offset: Vec3<T>,
     axis: Vec3<T>,
     stop_sq: T,
 ) -> Option<T> {
     let mut best = T::ZERO;
     for r in vertices {
-        let v2 = axis.cross(Vec3::from_array(*r)).length_squared();
+        let v2 = axis.cross(Vec3::from_array(*r) - offset).length_squared();
         if v2 > best {
             best = v2;
             if best >= stop_sq {
@@ -25,17 +26,17 @@ pub(crate) fn full_turn_scan<T: Float>(
     Some(best)
 }
 
-/// The rotation-plane coordinates `q = (x, y) = (r . e1, r . e2)` of `r` and
-/// the sides `g = u x q` of the arc's end directions `ua`, `ub`.
+/// The rotation-plane coordinates `q = (x, y) = (r' . e1, r' . e2)` of the
+/// offset `r' = fl(r - offset)` from the rotation centre, and the sides
+/// `g = u x q` of the arc's end directions `ua`, `ub`.
 #[inline(always)]
 fn plane_sides<T: Float>(
     r: &[T; 3],
-    e1: Vec3<T>,
-    e2: Vec3<T>,
-    ua: (T, T),
-    ub: (T, T),
+    offset: Vec3<T>,
+    (e1, e2): (Vec3<T>, Vec3<T>),
+    (ua, ub): ((T, T), (T, T)),
 ) -> (T, T, T, T) {
-    let r = Vec3::from_array(*r);
+    let r = Vec3::from_array(*r) - offset;
     let x = r.dot(e1);
     let y = r.dot(e2);
     (x, y, ua.0 * y - ua.1 * x, ub.0 * y - ub.1 * x)
@@ -53,15 +54,15 @@ fn end_values<T: Float>(x: T, y: T, ua: (T, T), ub: (T, T)) -> (T, T) {
 #[inline]
 pub(crate) fn arc_scan<T: Float>(
     vertices: &[[T; 3]],
+    offset: Vec3<T>,
     e1: Vec3<T>,
     e2: Vec3<T>,
-    ua: (T, T),
-    ub: (T, T),
+    (ua, ub): ((T, T), (T, T)),
     stop_sq: T,
 ) -> Option<T> {
     let mut best = T::ZERO;
     for r in vertices {
-        let (x, y, ga, gb) = plane_sides(r, e1, e2, ua, ub);
+        let (x, y, ga, gb) = plane_sides(r, offset, (e1, e2), (ua, ub));
         let v2 = if ga * gb <= T::ZERO {
             // c(t_a), c(t_b) on opposite sides of the line through q (or on it):
             // the arc meets +-q, where |c(t) . q| = |c| |q|.
@@ -95,17 +96,17 @@ pub(crate) fn arc_scan<T: Float>(
 #[inline]
 pub(crate) fn arc_signed_scan<T: Float>(
     vertices: &[[T; 3]],
+    offset: Vec3<T>,
     e1: Vec3<T>,
     e2: Vec3<T>,
-    ua: (T, T),
-    ub: (T, T),
+    (ua, ub): ((T, T), (T, T)),
     c_norm: T,
     slack: T,
 ) -> T {
     let mut reach_sq = -T::INFINITY;
     let mut best_f = -T::INFINITY;
     for r in vertices {
-        let (x, y, ga, gb) = plane_sides(r, e1, e2, ua, ub);
+        let (x, y, ga, gb) = plane_sides(r, offset, (e1, e2), (ua, ub));
         let (fa, fb) = end_values(x, y, ua, ub);
         if ga * gb <= T::ZERO && c_norm * (fa + fb) >= -slack {
             reach_sq = reach_sq.max_nan(x * x + y * y);

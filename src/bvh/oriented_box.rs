@@ -117,7 +117,7 @@ impl<T: Float> OrientedBox<T> {
     /// rotation of the direction whose computed body-frame image is `m`
     /// (`m = fl(R^T n)`, `R` the computed rotation by the angle `a`):
     /// `sum_k h_k |u_k . R^T n| + rho |n|`.
-    /// The rotation's angle enters through `err` (`BoxError::new(angle)`,
+    /// The rotation's angle enters through `err` (`BoxError::new(angle, oriented)`,
     /// computed once per placement).
     #[inline]
     pub(crate) fn support_up_with(&self, m: Vec3<T>, err: &BoxError<T>) -> T {
@@ -174,7 +174,7 @@ mod tests {
             let a = f64::from(k) * 0.37;
             let m = Vec3::new(a.cos() * a.sin(), (2.0 * a).sin(), a.cos());
             let m = m * (1.0 / m.length());
-            let s = b.support_up_with(m, &crate::rounding::BoxError::new(0.0));
+            let s = b.support_up_with(m, &crate::rounding::BoxError::new(0.0, false));
             let c = Vec3::from_array(b.centre).dot(m);
             for p in &pts {
                 let proj = Vec3::from_array(*p).dot(m) - c;

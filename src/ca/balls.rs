@@ -2,7 +2,7 @@
 
 use crate::ca::driver::{gap_step, placement_error};
 use crate::ca::{CaParams, CaStep, StepResult, Witness};
-use crate::{BoundingBall, Direction, Float, PreparedMotion, Vec3};
+use crate::{BoundingBall, Direction, Float, Point3, PreparedMotion, Vec3};
 
 /// Conservative advancement of two balls (each given relative to its body's
 /// rotation centre): exact sphere distance, `O(1)` directed bounds.
@@ -49,13 +49,13 @@ impl<T: Float> CaStep<T> for BallPair<T> {
         let nv = n.get();
         let witness = Witness {
             distance: dist,
-            on_a: ca + nv * ra,
-            on_b: cb - nv * rb,
+            on_a: Point3::from_array((ca + nv * ra).to_array()),
+            on_b: Point3::from_array((cb - nv * rb).to_array()),
         };
         if dist <= params.contact_distance {
             return StepResult::Touching {
                 witness,
-                normal: Some(nv),
+                normal: Some(n),
             };
         }
         let (ea, pa) = placement_error(a.motion(), t, self.a.outer_radius_up());
@@ -79,7 +79,7 @@ impl<T: Float> CaStep<T> for BallPair<T> {
         StepResult::Advance {
             step,
             witness: Some(witness),
-            normal: Some(nv),
+            normal: Some(n),
         }
     }
 }
@@ -88,8 +88,8 @@ fn touching<T: Float>(ca: Vec3<T>, cb: Vec3<T>, dist: T) -> StepResult<T> {
     StepResult::Touching {
         witness: Witness {
             distance: dist,
-            on_a: ca,
-            on_b: cb,
+            on_a: Point3::from_array(ca.to_array()),
+            on_b: Point3::from_array(cb.to_array()),
         },
         normal: None,
     }

@@ -3,7 +3,7 @@
 use crate::ca::driver::{gap_step, placement_error};
 use crate::ca::{BoundChoice, CaParams, CaStep, StepResult, Witness};
 use crate::rounding::diff_up;
-use crate::{BoundKind, Direction, Float, Pose, PreparedMotion, Vec3, VertexSet};
+use crate::{BoundKind, Direction, Float, Point3, Pose, PreparedMotion, Vec3, VertexSet};
 
 /// A distance oracle for a pair of bodies: what another engine plugs in.
 ///
@@ -35,7 +35,7 @@ impl<T, F: FnMut(&Pose<T>, &Pose<T>) -> Option<Witness<T>>> Proximity<T> for F {
 ///
 /// ```
 /// use motion_bound::ca::{time_of_impact, CaParams, ConvexPair, Witness};
-/// use motion_bound::{Pose, RigidMotion, Vec3, VertexSet};
+/// use motion_bound::{Point3, Pose, RigidMotion, Vec3, VertexSet};
 /// // Two unit cubes' corners; a crude oracle: the closest pair of corners
 /// // (exact for these face-to-face cubes).
 /// let mut cube = [[0.0f64; 3]; 8];
@@ -50,7 +50,7 @@ impl<T, F: FnMut(&Pose<T>, &Pose<T>) -> Option<Witness<T>>> Proximity<T> for F {
 ///             let (a, b) = (pa.transform_point(Vec3::from_array(*p)), pb.transform_point(Vec3::from_array(*q)));
 ///             let d = (b - a).length();
 ///             if best.map_or(true, |w| d < w.distance) {
-///                 best = Some(Witness { distance: d, on_a: a, on_b: b });
+///                 best = Some(Witness { distance: d, on_a: Point3::from_vec3(a), on_b: Point3::from_vec3(b) });
 ///             }
 ///         }
 ///     }
@@ -110,8 +110,8 @@ impl<T: Float, P: Proximity<T>> CaStep<T> for ConvexPair<'_, T, P> {
             return StepResult::Touching {
                 witness: Witness {
                     distance: T::ZERO,
-                    on_a: ca,
-                    on_b: cb,
+                    on_a: Point3::from_vec3(ca),
+                    on_b: Point3::from_vec3(cb),
                 },
                 normal: None,
             };
@@ -120,7 +120,7 @@ impl<T: Float, P: Proximity<T>> CaStep<T> for ConvexPair<'_, T, P> {
         let (Ok(n), false) = (dir, w.distance <= params.contact_distance) else {
             return StepResult::Touching {
                 witness: w,
-                normal: dir.ok().map(Direction::get),
+                normal: dir.ok(),
             };
         };
         let nv = n.get();
@@ -154,7 +154,7 @@ impl<T: Float, P: Proximity<T>> CaStep<T> for ConvexPair<'_, T, P> {
         StepResult::Advance {
             step,
             witness: Some(w),
-            normal: Some(nv),
+            normal: Some(n),
         }
     }
 }
@@ -192,8 +192,8 @@ impl<T: Float> Proximity<T> for GjkProximity<'_, T> {
         }
         Some(Witness {
             distance: r.distance,
-            on_a: r.on_a,
-            on_b: r.on_b,
+            on_a: Point3::from_vec3(r.on_a),
+            on_b: Point3::from_vec3(r.on_b),
         })
     }
 }

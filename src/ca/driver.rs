@@ -1,8 +1,8 @@
 //! The conservative-advancement loop.
 
 use crate::ca::{CaError, CaOutcome, CaParams, CaReport, Contact, ContactCriterion, Witness};
-use crate::rounding::{advance_down, diff_down, gamma, pose_error_up, sum_reaches};
-use crate::{Float, PreparedMotion, RigidMotion, Vec3};
+use crate::rounding::{advance_down, diff_down, gamma, lever_up, pose_error_up, sum_reaches};
+use crate::{Direction, Float, PreparedMotion, RigidMotion};
 
 /// What a geometry reports at one time of a conservative-advancement query.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -12,7 +12,7 @@ pub enum StepResult<T> {
         /// The closest features found.
         witness: Witness<T>,
         /// The contact normal from A to B, if known.
-        normal: Option<Vec3<T>>,
+        normal: Option<Direction<T>>,
     },
     /// The bodies do not touch during `[t, t + step]` (certified).
     Advance {
@@ -22,7 +22,7 @@ pub enum StepResult<T> {
         /// The closest features found, if the stepper computed them.
         witness: Option<Witness<T>>,
         /// The separating direction used, from A to B, if any.
-        normal: Option<Vec3<T>>,
+        normal: Option<Direction<T>>,
     },
 }
 
@@ -178,20 +178,24 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
     }
 }
 
-/// An upper bound of how far a body point within `radius` of the rotation
-/// centre, placed at time `t` by `motion.pose_at(t)` in floating point, is
-/// from its exact position (`proofs/floating-point.md`, section "Pose"), and
-/// an upper bound of the distance from the origin of every placed point
-/// (`|x0| + |v| |t| + radius`, rounded up).
+/// An upper bound of how far a body point within `radius` of the body
+/// origin, placed at time `t` by `motion.pose_at(t)` in floating point, is
+/// from its exact position (`proofs/floating-point.md`, sections "Pose" and
+/// "Orientation"), and an upper bound of the distance from the origin of
+/// every placed point (`|x0| + |v| |t| + radius + |c|`, rounded up, with `c`
+/// the rotation centre in the body frame).
 #[must_use]
 pub fn placement_error<T: Float>(motion: &RigidMotion<T>, t: T, radius: T) -> (T, T) {
     let centre_reach = (motion.centre().to_vec3().norm_l1() + motion.linear().norm_l1() * t.abs())
         * (T::ONE + gamma::<T>(4));
-    let err = pose_error_up(motion.angle_at(t), radius, centre_reach);
-    (
-        err,
-        (centre_reach + radius) * (T::ONE + gamma::<T>(2)) + err,
-    )
+    let lever = lever_up(radius, motion.local_reach());
+    let err = pose_error_up(
+        motion.angle_at(t),
+        lever,
+        centre_reach + motion.local_reach(),
+        !motion.orientation().is_identity(),
+    );
+    (err, (centre_reach + lever) * (T::ONE + gamma::<T>(2)) + err)
 }
 
 /// A certified safe step from a computed gap along a direction: `gap` is

@@ -1,6 +1,6 @@
 //! What a conservative-advancement query found, and what ended it.
 
-use crate::{Float, Vec3};
+use crate::{Direction, Float, Point3};
 
 /// Closest features at one time: the distance and a witness point on each
 /// body (in the world frame).
@@ -10,9 +10,9 @@ pub struct Witness<T> {
     /// contact distance).
     pub distance: T,
     /// The witness point on body A.
-    pub on_a: Vec3<T>,
+    pub on_a: Point3<T>,
     /// The witness point on body B.
-    pub on_b: Vec3<T>,
+    pub on_b: Point3<T>,
 }
 
 impl<T: Float> Witness<T> {
@@ -20,8 +20,8 @@ impl<T: Float> Witness<T> {
     /// points coincide (a touching contact has no defined direction from the
     /// points alone).
     #[must_use]
-    pub fn normal(&self) -> Option<Vec3<T>> {
-        (self.on_b - self.on_a).try_normalize()
+    pub fn normal(&self) -> Option<Direction<T>> {
+        Direction::try_new(self.on_b - self.on_a).ok()
     }
 }
 
@@ -46,7 +46,7 @@ pub struct Contact<T> {
     pub witness: Option<Witness<T>>,
     /// The unit contact normal from A to B at `time`, when the stepper knew
     /// one (the last separating direction it used), else the witnesses'.
-    pub normal: Option<Vec3<T>>,
+    pub normal: Option<Direction<T>>,
 }
 
 /// Which tolerance declared a contact.

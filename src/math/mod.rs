@@ -2,7 +2,9 @@
 //! geometric vocabulary every layer above speaks (`no_std`, no allocation).
 
 pub(crate) mod direction;
+pub(crate) mod isometry;
 pub(crate) mod point;
 pub(crate) mod pose;
+pub(crate) mod quaternion;
 pub(crate) mod rotation;
 pub(crate) mod vec3;

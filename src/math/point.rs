@@ -47,6 +47,13 @@ impl<T: Float> Point3<T> {
         [self.x, self.y, self.z]
     }
 
+    /// The point at the tip of `v` from the origin.
+    #[inline]
+    #[must_use]
+    pub const fn from_vec3(v: Vec3<T>) -> Self {
+        Self::new(v.x, v.y, v.z)
+    }
+
     /// The vector from the origin to this point.
     #[inline]
     #[must_use]

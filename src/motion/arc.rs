@@ -1,6 +1,7 @@
 //! The arc swept by the rotating direction over a motion's interval,
 //! precomputed once per motion.
 
+use crate::rounding::frame_margin_up;
 use crate::{Float, RigidMotion, Vec3};
 
 /// What the EVQ case split needs of a motion's rotation over its interval
@@ -13,7 +14,7 @@ use crate::{Float, RigidMotion, Vec3};
 /// and then evaluates thousands of per-node bounds without trigonometry.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct SweptArc<T> {
-    /// The unit rotation axis (zero when not rotating).
+    /// The unit rotation axis in the body frame (zero when not rotating).
     pub(crate) axis: Vec3<T>,
     /// `max(|theta_a|, |theta_b|)`, which the rounding margin grows with.
     pub(crate) theta_m: T,
@@ -38,7 +39,22 @@ impl<T: Float> SweptArc<T> {
     /// ```
     #[must_use]
     pub fn new(motion: &RigidMotion<T>) -> Self {
-        let omega = motion.angular_speed();
+        Self::with_body_angular(motion, motion.body_angular())
+    }
+
+    /// The arc of `motion` with its body-frame angular velocity `w_b`
+    /// ([`RigidMotion::body_angular`]) computed once.
+    fn with_body_angular(motion: &RigidMotion<T>, w_b: Vec3<T>) -> Self {
+        let omega = if motion.orientation().is_identity() {
+            motion.angular_speed()
+        } else {
+            w_b.length()
+        };
+        let axis = if omega > T::ZERO {
+            Vec3::new(w_b.x / omega, w_b.y / omega, w_b.z / omega)
+        } else {
+            Vec3::ZERO
+        };
         let iv = motion.interval();
         let theta_a = omega * iv.start();
         let theta_b = omega * iv.end();
@@ -53,7 +69,7 @@ impl<T: Float> SweptArc<T> {
             ((T::ONE, T::ZERO), (T::ONE, T::ZERO))
         };
         Self {
-            axis: motion.axis(),
+            axis,
             theta_m: theta_a.abs().max_nan(theta_b.abs()),
             rotating,
             full_turn,
@@ -99,15 +115,33 @@ impl<T: Float> SweptArc<T> {
 pub struct PreparedMotion<T> {
     motion: RigidMotion<T>,
     arc: SweptArc<T>,
+    /// `Q0^T w`, computed (exactly `w` for the identity orientation).
+    body_angular: Vec3<T>,
+    /// The coefficient `k` of the EVQ bounds' frame margin `k R` for points
+    /// within `R` of the rotation centre (`rounding::frame_margin_up`): `0`
+    /// when the body frame is the world frame and the rotation centre the
+    /// body origin.
+    pub(crate) frame_margin: T,
 }
 
 impl<T: Float> PreparedMotion<T> {
-    /// Precomputes the arc of `motion` over its interval.
+    /// Precomputes the arc of `motion` over its interval, and the body-frame
+    /// quantities.
     #[must_use]
     pub fn new(motion: &RigidMotion<T>) -> Self {
+        let body_angular = motion.body_angular();
+        let arc = SweptArc::with_body_angular(motion, body_angular);
+        let frame_margin = frame_margin_up(
+            body_angular.norm_l1(),
+            arc.theta_m,
+            !motion.orientation().is_identity(),
+            motion.local_centre() != Vec3::ZERO,
+        );
         Self {
             motion: *motion,
-            arc: SweptArc::new(motion),
+            arc,
+            body_angular,
+            frame_margin,
         }
     }
 
@@ -123,5 +157,12 @@ impl<T: Float> PreparedMotion<T> {
     #[must_use]
     pub const fn arc(&self) -> &SweptArc<T> {
         &self.arc
+    }
+
+    /// The angular velocity in the body frame, `Q0^T w`.
+    #[inline]
+    #[must_use]
+    pub const fn body_angular(&self) -> Vec3<T> {
+        self.body_angular
     }
 }

@@ -1,29 +1,55 @@
-//! Rigid motion with constant linear and angular velocity.
+//! Rigid motion with constant linear and angular velocity, from a start pose.
 
 use crate::error::{check_components, InputError, Quantity};
 use crate::math::rotation::rotate_about_axis;
-use crate::{BodyPoint, Direction, Float, Point3, Pose, TimeInterval, Vec3};
+use crate::{BodyPoint, Direction, Float, Isometry, Point3, Pose, Rotation, TimeInterval, Vec3};
 
 /// A rigid motion with constant linear velocity `v` of the rotation centre and
-/// constant angular velocity `w` about it, considered over a time interval.
+/// constant angular velocity `w` about it, from a start pose, considered over
+/// a time interval.
 ///
-/// A body point `r` (a [`BodyPoint`], given relative to the rotation centre at
-/// the epoch `t = 0`) is at
+/// A body point `r` (a [`BodyPoint`], given in the body's own frame: the
+/// frame its vertex set or tree is built in) is at
 ///
 /// ```text
-/// p(t) = x0 + v t + R(t) r,        p'(t) = v + w x R(t) r,
+/// p(t) = x0 + v t + R(w t) Q0 (r - c),        p'(t) = v + w x R(w t) Q0 (r - c),
 /// ```
 ///
-/// where `x0` is the centre at `t = 0` and `R(t)` the rotation about the fixed
-/// axis `w^ = w/|w|` by the angle `|w| t` (right-handed). The directed speed
-/// along a unit `n` is `p'(t) . n = v . n + (n x w) . R(t) r`.
+/// where `Q0` is the body's orientation at the epoch `t = 0` (a
+/// [`Rotation`], identity by default), `c` the rotation centre in the body
+/// frame (parry's `local_center`; the body origin by default), `x0` the
+/// rotation centre's world position at `t = 0`, and `R(w t)` the rotation
+/// about the fixed world axis `w^ = w/|w|` by the angle `|w| t`
+/// (right-handed). `v` and `w` are world vectors. The directed speed along a
+/// unit `n` is `v . n + (n x w) . R(w t) Q0 (r - c)`; the bounds evaluate its
+/// rotational part in the body frame (`Q0^T n` and `Q0^T w`, `O(1)` per
+/// direction), so a body's vertex set and tree are built once, whatever its
+/// orientation (`proofs/floating-point.md`, "Orientation").
 ///
 /// The interval is where bounds are taken. [`restrict`](Self::restrict)
 /// narrows it and keeps the epoch, so per-body summaries computed once stay
 /// valid at every step of conservative advancement.
+///
+/// ```
+/// use motion_bound::{BodyPoint, Isometry, Point3, RigidMotion, Rotation, Vec3};
+/// // A body turned a quarter about z at the start, moving along x at 2 and
+/// // spinning about z at 1 rad per unit time, over [0, 0.5].
+/// let turned = Rotation::try_from_axis_angle(Vec3::new(0.0, 0.0, 1.0), core::f64::consts::FRAC_PI_2)?;
+/// let start = Isometry::try_new(turned, Vec3::new(1.0, 0.0, 0.0))?;
+/// let m = RigidMotion::try_from_start(start, Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 0.0, 1.0), 0.5)?;
+/// // The body point (1, 0, 0) starts at (1, 1, 0).
+/// let p = m.point_at(BodyPoint::new(1.0, 0.0, 0.0), 0.0);
+/// assert!((p - Point3::new(1.0, 1.0, 0.0)).length() < 1e-15);
+/// assert_eq!(m.interval().end(), 0.5);
+/// # Ok::<(), motion_bound::InputError>(())
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RigidMotion<T> {
     centre: Point3<T>,
+    orientation: Rotation<T>,
+    local_centre: Vec3<T>,
+    /// `|c|` rounded up (`rounding::radius_up`), `0` for `c = 0`.
+    local_reach: T,
     linear: Vec3<T>,
     angular: Vec3<T>,
     interval: TimeInterval<T>,
@@ -32,8 +58,10 @@ pub struct RigidMotion<T> {
 }
 
 impl<T: Float> RigidMotion<T> {
-    /// The motion with centre `centre` at `t = 0`, linear velocity `linear`
-    /// and angular velocity `angular` (radians per unit time), over `interval`.
+    /// The motion of a body with the identity start orientation, rotating
+    /// about its origin, whose origin is at `centre` at `t = 0`, with linear
+    /// velocity `linear` and angular velocity `angular` (radians per unit
+    /// time), over `interval`.
     ///
     /// # Errors
     /// [`InputError::NonFinite`] or [`InputError::TooLarge`] (above
@@ -67,6 +95,9 @@ impl<T: Float> RigidMotion<T> {
         };
         Ok(Self {
             centre,
+            orientation: Rotation::IDENTITY,
+            local_centre: Vec3::ZERO,
+            local_reach: T::ZERO,
             linear,
             angular,
             interval,
@@ -75,7 +106,8 @@ impl<T: Float> RigidMotion<T> {
         })
     }
 
-    /// A motion over `[0, 1]` from plain arrays: centre, `v`, `w`.
+    /// A motion over `[0, 1]` from plain arrays: centre, `v`, `w` (identity
+    /// start orientation, rotation about the body origin).
     ///
     /// # Errors
     /// As [`try_new`](Self::try_new).
@@ -90,6 +122,140 @@ impl<T: Float> RigidMotion<T> {
             Vec3::from_array(angular),
             TimeInterval::UNIT,
         )
+    }
+
+    /// The motion of a body at the pose `start` at `t = 0` (its frame's
+    /// origin at `start.translation()`, turned by `start.rotation()`),
+    /// rotating about its origin with angular velocity `angular` while the
+    /// origin moves at `linear` (world vectors), over `[0, duration]`: what
+    /// an engine hands over for one frame of length `duration`.
+    ///
+    /// # Errors
+    /// As [`try_new`](Self::try_new); [`InputError::NonPositiveDuration`]
+    /// for `duration <= 0`, [`InputError::NonFinite`] or
+    /// [`InputError::TooLarge`] with [`Quantity::Duration`].
+    pub fn try_from_start(
+        start: Isometry<T>,
+        linear: Vec3<T>,
+        angular: Vec3<T>,
+        duration: T,
+    ) -> Result<Self, InputError> {
+        let interval = frame_interval(duration)?;
+        let m = Self::try_new(
+            Point3::from_array(start.translation().to_array()),
+            linear,
+            angular,
+            interval,
+        )?;
+        Ok(Self {
+            orientation: start.rotation(),
+            ..m
+        })
+    }
+
+    /// The motion with constant velocities that carries a body from the pose
+    /// `start` at `t = 0` to the pose `end` at `t = duration`, rotating about
+    /// its origin by the shortest rotation from `start`'s orientation to
+    /// `end`'s (the angle in `[0, pi]`), with its origin on the straight line
+    /// between the two positions: the constant-velocity interpolation of
+    /// FCL's `InterpMotion(tf_beg, tf_end)` and parry's
+    /// `NonlinearRigidMotion` between two poses. The end pose is reached up
+    /// to rounding.
+    ///
+    /// # Errors
+    /// As [`try_from_start`](Self::try_from_start) (a velocity beyond
+    /// [`Float::MAX_INPUT`] for a tiny duration is `TooLarge`).
+    ///
+    /// ```
+    /// use motion_bound::{Isometry, Point3, RigidMotion, Rotation, Vec3};
+    /// let a = Isometry::try_from_translation(Vec3::new(0.0, 0.0, 0.0))?;
+    /// let turned = Rotation::try_from_axis_angle(Vec3::new(1.0, 0.0, 0.0), 1.0)?;
+    /// let b = Isometry::try_new(turned, Vec3::new(2.0, 0.0, 0.0))?;
+    /// let m = RigidMotion::try_between(a, b, 0.25)?;
+    /// let r = Point3::new(0.0, 1.0, 0.0);
+    /// let at_end = m.pose_at(0.25).transform_point(r.to_vec3());
+    /// assert!((Point3::from_array(at_end.to_array()) - b.transform_point(r)).length() < 1e-14);
+    /// # Ok::<(), motion_bound::InputError>(())
+    /// ```
+    pub fn try_between(
+        start: Isometry<T>,
+        end: Isometry<T>,
+        duration: T,
+    ) -> Result<Self, InputError> {
+        Self::try_between_about(start, end, duration, Vec3::ZERO)
+    }
+
+    /// As [`try_between`](Self::try_between), rotating about the body point
+    /// `local_centre` (its centre of mass, say) instead of the body origin:
+    /// that point moves on the straight line between its two positions, and
+    /// the other points follow the rotation about it.
+    ///
+    /// # Errors
+    /// As [`try_between`](Self::try_between), and
+    /// [`InputError::NonFinite`] or [`InputError::TooLarge`] with
+    /// [`Quantity::LocalCentre`].
+    pub fn try_between_about(
+        start: Isometry<T>,
+        end: Isometry<T>,
+        duration: T,
+        local_centre: Vec3<T>,
+    ) -> Result<Self, InputError> {
+        let interval = frame_interval(duration)?;
+        check_components(local_centre.to_array(), Quantity::LocalCentre)?;
+        let c0 = start.translation() + start.rotation().rotate(local_centre);
+        let c1 = end.translation() + end.rotation().rotate(local_centre);
+        let linear = (c1 - c0) * (T::ONE / duration);
+        let turn = end.rotation() * start.rotation().inverse();
+        let angular = turn.to_scaled_axis() * (T::ONE / duration);
+        let m = Self::try_new(Point3::from_array(c0.to_array()), linear, angular, interval)?;
+        Ok(Self {
+            orientation: start.rotation(),
+            local_centre,
+            local_reach: reach_up(local_centre),
+            ..m
+        })
+    }
+
+    /// The same motion with the start orientation `orientation`: the
+    /// rotation centre's world position `x0`, `v` and `w` are kept.
+    #[must_use]
+    pub const fn with_orientation(self, orientation: Rotation<T>) -> Self {
+        Self {
+            orientation,
+            ..self
+        }
+    }
+
+    /// The same motion about another rotation centre, the body point
+    /// `local_centre` (parry's `local_center`): the body's pose at `t = 0` is
+    /// kept (up to rounding), the linear velocity becomes that of the new
+    /// centre, the angular velocity is unchanged.
+    ///
+    /// # Errors
+    /// [`InputError::NonFinite`] or [`InputError::TooLarge`] with
+    /// [`Quantity::LocalCentre`], or with [`Quantity::Centre`] if the new
+    /// centre's world position is too large.
+    ///
+    /// ```
+    /// use motion_bound::{BodyPoint, RigidMotion, Vec3};
+    /// // Spinning about the body point (1, 0, 0), which stays put.
+    /// let m = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0, 0.0, 2.0])?
+    ///     .try_with_local_centre(Vec3::new(1.0, 0.0, 0.0))?;
+    /// let pivot = m.point_at(BodyPoint::new(1.0, 0.0, 0.0), 0.7);
+    /// assert!((pivot.to_vec3() - Vec3::new(1.0, 0.0, 0.0)).length() < 1e-15);
+    /// # Ok::<(), motion_bound::InputError>(())
+    /// ```
+    pub fn try_with_local_centre(self, local_centre: Vec3<T>) -> Result<Self, InputError> {
+        check_components(local_centre.to_array(), Quantity::LocalCentre)?;
+        let shift = self.orientation.rotate(local_centre - self.local_centre);
+        let centre = self.centre + shift;
+        check_components(centre.to_array(), Quantity::Centre)?;
+        Ok(Self {
+            centre,
+            local_centre,
+            local_reach: reach_up(local_centre),
+            ..self
+        })
     }
 
     /// The same motion, with bounds taken over `[start, end]` instead.
@@ -114,11 +280,53 @@ impl<T: Float> RigidMotion<T> {
         Self { interval, ..*self }
     }
 
-    /// The rotation centre at `t = 0`.
+    /// The rotation centre's world position at `t = 0`, `x0`.
     #[inline]
     #[must_use]
     pub const fn centre(&self) -> Point3<T> {
         self.centre
+    }
+
+    /// The body's orientation at `t = 0`, `Q0`.
+    #[inline]
+    #[must_use]
+    pub const fn orientation(&self) -> Rotation<T> {
+        self.orientation
+    }
+
+    /// The rotation centre in the body frame, `c`.
+    #[inline]
+    #[must_use]
+    pub const fn local_centre(&self) -> Vec3<T> {
+        self.local_centre
+    }
+
+    /// `|c|` rounded up (`0` exactly when the rotation centre is the body
+    /// origin): how much farther from the rotation centre than from the body
+    /// origin a body point may be.
+    #[inline]
+    #[must_use]
+    pub const fn local_reach(&self) -> T {
+        self.local_reach
+    }
+
+    /// The body's pose at `t = 0`: `r |-> x0 + Q0 (r - c)`.
+    #[must_use]
+    pub fn start_pose(&self) -> Isometry<T> {
+        let t = self.centre.to_vec3() - self.orientation.rotate(self.local_centre);
+        Isometry::try_new(self.orientation, t).unwrap_or(Isometry::IDENTITY)
+    }
+
+    /// The angular velocity in the body frame at the epoch, `Q0^T w`
+    /// (computed; exactly `w` for the identity orientation).
+    #[inline]
+    #[must_use]
+    pub fn body_angular(&self) -> Vec3<T> {
+        if self.orientation.is_identity() {
+            self.angular
+        } else {
+            self.orientation.inverse_rotate(self.angular)
+        }
     }
 
     /// The linear velocity `v` of the rotation centre.
@@ -170,18 +378,19 @@ impl<T: Float> RigidMotion<T> {
         self.centre + self.linear * t
     }
 
-    /// The lever arm `R(t) r` of body point `r` at time `t`.
+    /// The lever arm `R(w t) Q0 (r - c)` of body point `r` at time `t`.
     #[inline]
     #[must_use]
     pub fn arm_at(&self, r: BodyPoint<T>, t: T) -> Vec3<T> {
+        let arm = self.orientation.rotate(r.arm() - self.local_centre);
         if self.omega == T::ZERO {
-            r.arm()
+            arm
         } else {
-            rotate_about_axis(r.arm(), self.axis, self.angle_at(t))
+            rotate_about_axis(arm, self.axis, self.angle_at(t))
         }
     }
 
-    /// The world position `p(t) = x0 + v t + R(t) r` of body point `r`.
+    /// The world position `p(t) = x0 + v t + R(w t) Q0 (r - c)` of body point `r`.
     #[inline]
     #[must_use]
     pub fn point_at(&self, r: BodyPoint<T>, t: T) -> Point3<T> {
@@ -189,8 +398,9 @@ impl<T: Float> RigidMotion<T> {
     }
 
     /// The pose at time `t`: `p(t) = pose.transform_point(r)` for every body
-    /// point `r`, with the rotation matrix `R(t)` built once by Rodrigues'
-    /// formula `R = cos(a) I + sin(a) [k]x + (1 - cos(a)) k k^T`, `a = |w| t`.
+    /// point `r`, with the rotation matrix `R(w t)` built once by Rodrigues'
+    /// formula `R = cos(a) I + sin(a) [k]x + (1 - cos(a)) k k^T`, `a = |w| t`,
+    /// times `Q0`'s matrix, and the translation `x0 + v t - R(w t) Q0 c`.
     ///
     /// ```
     /// use motion_bound::{BodyPoint, RigidMotion, Vec3};
@@ -201,18 +411,33 @@ impl<T: Float> RigidMotion<T> {
     /// ```
     #[must_use]
     pub fn pose_at(&self, t: T) -> Pose<T> {
-        let translation = self.centre_at(t).to_vec3();
+        let centre = self.centre_at(t).to_vec3();
+        let spin = self.spin_at(t);
+        let rotation = if self.orientation.is_identity() {
+            spin
+        } else {
+            mat_mul(&spin, &self.orientation.matrix())
+        };
+        let mut pose = Pose {
+            rotation,
+            translation: centre,
+        };
+        if self.local_centre != Vec3::ZERO {
+            pose.translation = centre - pose.transform_vector(self.local_centre);
+        }
+        pose
+    }
+
+    /// `R(w t)`, row-major, by Rodrigues' formula (the identity when `w = 0`).
+    fn spin_at(&self, t: T) -> [[T; 3]; 3] {
         if self.omega == T::ZERO {
-            return Pose {
-                translation,
-                ..Pose::IDENTITY
-            };
+            return Pose::<T>::IDENTITY.rotation;
         }
         let a = self.angle_at(t);
         let (s, c) = (a.sin(), a.cos());
         let k = self.axis;
         let d = T::ONE - c;
-        let rotation = [
+        [
             [
                 c + d * k.x * k.x,
                 d * k.x * k.y - s * k.z,
@@ -228,14 +453,10 @@ impl<T: Float> RigidMotion<T> {
                 d * k.z * k.y + s * k.x,
                 c + d * k.z * k.z,
             ],
-        ];
-        Pose {
-            rotation,
-            translation,
-        }
+        ]
     }
 
-    /// The velocity `p'(t) = v + w x R(t) r` of body point `r`.
+    /// The velocity `p'(t) = v + w x R(w t) Q0 (r - c)` of body point `r`.
     #[inline]
     #[must_use]
     pub fn velocity_at(&self, r: BodyPoint<T>, t: T) -> Vec3<T> {
@@ -248,6 +469,35 @@ impl<T: Float> RigidMotion<T> {
     pub fn directed_speed_at(&self, r: BodyPoint<T>, t: T, n: Direction<T>) -> T {
         self.velocity_at(r, t).dot(n.get())
     }
+}
+
+/// `|c|` rounded up (`proofs/floating-point.md`, "Summary").
+fn reach_up<T: Float>(c: Vec3<T>) -> T {
+    if c == Vec3::ZERO {
+        T::ZERO
+    } else {
+        crate::rounding::radius_up(c.length_squared())
+    }
+}
+
+/// `[0, duration]`, checked.
+fn frame_interval<T: Float>(duration: T) -> Result<TimeInterval<T>, InputError> {
+    check_components([duration, T::ZERO, T::ZERO], Quantity::Duration)?;
+    if duration <= T::ZERO {
+        return Err(InputError::NonPositiveDuration);
+    }
+    TimeInterval::try_new(T::ZERO, duration)
+}
+
+/// `a b` for row-major 3x3 matrices, each entry summed left to right.
+fn mat_mul<T: Float>(a: &[[T; 3]; 3], b: &[[T; 3]; 3]) -> [[T; 3]; 3] {
+    let mut out = [[T::ZERO; 3]; 3];
+    for (i, row) in out.iter_mut().enumerate() {
+        for (j, e) in row.iter_mut().enumerate() {
+            *e = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
+        }
+    }
+    out
 }
 
 #[cfg(test)]

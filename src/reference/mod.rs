@@ -164,10 +164,17 @@ pub struct Frame<R> {
     omega: R,
     ta: R,
     tb: R,
+    /// The start orientation's exact rotation (of the stored quaternion,
+    /// normalised in `R`), row-major.
+    rot: [V3<R>; 3],
+    /// The rotation centre in the body frame.
+    offset: V3<R>,
 }
 
 impl<R: Real> Frame<R> {
-    /// Widens the motion and direction exactly to `R` and normalises `n` there.
+    /// Widens the motion and direction exactly to `R` and normalises `n`
+    /// there; the start orientation's rotation is built in `R` from its
+    /// quaternion normalised in `R`, independently of the crate's matrix.
     pub fn new<T: Float>(motion: &RigidMotion<T>, n: Direction<T>) -> Self {
         let n: V3<R> = widen(n.to_array());
         let n = scale(n, R::from_f64(1.0).div(dot(n, n).sqrt()));
@@ -188,19 +195,62 @@ impl<R: Real> Frame<R> {
             omega,
             ta: R::from_f64(iv.start().to_f64()),
             tb: R::from_f64(iv.end().to_f64()),
+            rot: rotation_matrix(motion.orientation().quaternion()),
+            offset: widen(motion.local_centre().to_array()),
         }
     }
 
-    /// The speed profile of body point `r`.
+    /// The speed profile of body point `r` (in the body frame): its lever
+    /// arm at the epoch is `Q0 (r - c)`, computed in `R`.
     pub fn profile<T: Float>(&self, r: [T; 3]) -> SpeedProfile<R> {
         let r: V3<R> = widen(r);
+        let d = [
+            r[0].sub(self.offset[0]),
+            r[1].sub(self.offset[1]),
+            r[2].sub(self.offset[2]),
+        ];
+        let arm = [
+            dot(self.rot[0], d),
+            dot(self.rot[1], d),
+            dot(self.rot[2], d),
+        ];
         SpeedProfile {
             a: self.a,
-            p: dot(self.c, r),
-            q: dot(self.c, cross(self.k, r)),
+            p: dot(self.c, arm),
+            q: dot(self.c, cross(self.k, arm)),
             omega: self.omega,
         }
     }
+}
+
+/// The rotation matrix of the quaternion `(w, x, y, z)` normalised in `R`:
+/// `(w^2 - |v|^2) I + 2 v v^T + 2 w [v]x` over `|q|^2`.
+fn rotation_matrix<T: Float, R: Real>(q: [T; 4]) -> [V3<R>; 3] {
+    let [w, x, y, z] = q.map(|c| R::from_f64(c.to_f64()));
+    let n2 = w.mul(w).add(x.mul(x)).add(y.mul(y)).add(z.mul(z));
+    let two = R::from_f64(2.0);
+    let d = w.mul(w).sub(x.mul(x)).sub(y.mul(y)).sub(z.mul(z));
+    let e = |a: R, b: R, sign: f64, c: R, e: R| {
+        two.mul(a.mul(b).add(R::from_f64(sign).mul(c.mul(e))))
+            .div(n2)
+    };
+    [
+        [
+            d.add(two.mul(x.mul(x))).div(n2),
+            e(x, y, -1.0, w, z),
+            e(x, z, 1.0, w, y),
+        ],
+        [
+            e(x, y, 1.0, w, z),
+            d.add(two.mul(y.mul(y))).div(n2),
+            e(y, z, -1.0, w, x),
+        ],
+        [
+            e(x, z, -1.0, w, y),
+            e(y, z, 1.0, w, x),
+            d.add(two.mul(z.mul(z))).div(n2),
+        ],
+    ]
 }
 
 impl<R: Real> SpeedProfile<R> {

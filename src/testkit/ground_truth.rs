@@ -14,11 +14,11 @@ use std::vec::Vec;
 
 use crate::RigidMotion;
 
-/// A triangle mesh as plain slices: vertices relative to the body's rotation
-/// centre at the epoch, and index triples.
+/// A triangle mesh as plain slices: vertices in the body frame, and index
+/// triples.
 #[derive(Clone, Copy, Debug)]
 pub struct MeshRef<'a> {
-    /// Vertices relative to the rotation centre at the epoch.
+    /// Vertices in the body frame.
     pub vertices: &'a [[f64; 3]],
     /// Triangles as index triples into `vertices`.
     pub triangles: &'a [[u32; 3]],
@@ -33,32 +33,42 @@ impl<'a> From<&'a crate::TriMesh<f64>> for MeshRef<'a> {
     }
 }
 
-/// Places `r` at time `t`: `x0 + v t + q r q^-1` with `q` the unit
-/// quaternion of the rotation by `|w| t` about `w/|w|`.
+/// Rotates `r` by the unit quaternion `(w, q)`:
+/// `r' = r + 2 w (q x r) + 2 q x (q x r)`.
+fn quat_rotate(w: f64, q: [f64; 3], r: [f64; 3]) -> [f64; 3] {
+    let cross = |a: [f64; 3], b: [f64; 3]| {
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    };
+    let cx = cross(q, r);
+    let ccx = cross(q, cx);
+    [0, 1, 2].map(|k| r[k] + 2.0 * w * cx[k] + 2.0 * ccx[k])
+}
+
+/// Places the body point `r` at time `t`:
+/// `x0 + v t + q_s q0 (r - c) q0^-1 q_s^-1`, with `q0` the start orientation's
+/// quaternion (normalised here), `c` the rotation centre in the body frame
+/// and `q_s` the unit quaternion of the rotation by `|w| t` about `w/|w|`.
 #[must_use]
 pub fn place(motion: &RigidMotion<f64>, r: [f64; 3], t: f64) -> [f64; 3] {
     let w = motion.angular();
     let x0 = motion.centre();
     let v = motion.linear();
+    let c = motion.local_centre();
+    let d = [r[0] - c.x, r[1] - c.y, r[2] - c.z];
+    let [q0w, q0x, q0y, q0z] = motion.orientation().quaternion();
+    let l = (q0w * q0w + q0x * q0x + q0y * q0y + q0z * q0z).sqrt();
+    let arm = quat_rotate(q0w / l, [q0x / l, q0y / l, q0z / l], d);
     let omega = (w.x * w.x + w.y * w.y + w.z * w.z).sqrt();
     let rotated = if omega == 0.0 {
-        r
+        arm
     } else {
         let half = 0.5 * omega * t;
-        let (s, c) = (half.sin() / omega, half.cos());
-        let (qx, qy, qz) = (w.x * s, w.y * s, w.z * s);
-        // r' = r + 2 q_w (q x r) + 2 q x (q x r)
-        let cx = [
-            qy * r[2] - qz * r[1],
-            qz * r[0] - qx * r[2],
-            qx * r[1] - qy * r[0],
-        ];
-        let ccx = [
-            qy * cx[2] - qz * cx[1],
-            qz * cx[0] - qx * cx[2],
-            qx * cx[1] - qy * cx[0],
-        ];
-        [0, 1, 2].map(|k| r[k] + 2.0 * c * cx[k] + 2.0 * ccx[k])
+        let (s, cw) = (half.sin() / omega, half.cos());
+        quat_rotate(cw, [w.x * s, w.y * s, w.z * s], arm)
     };
     [
         x0.x + v.x * t + rotated[0],

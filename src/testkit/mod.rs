@@ -74,6 +74,24 @@ pub enum Normal {
     Orthogonal([f64; 3]),
 }
 
+/// The body frame of a case: the body's points are given in the world
+/// frame of the hard case, or in a body frame turned by a start orientation
+/// (and with a rotation centre off the body origin), so that the bounds
+/// must take `n` and `w` into the body frame.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "arbitrary", derive(arbitrary::Arbitrary))]
+pub enum BodyFrame {
+    /// The world frame: identity start orientation, rotation about the body
+    /// origin.
+    World,
+    /// A start orientation from the raw quaternion `(w, x, y, z)` (the
+    /// identity when it is zero or not finite).
+    Oriented([f64; 4]),
+    /// A start orientation and the rotation centre at the raw body point
+    /// (clamped to `[-1, 1]`, times the body size).
+    OrientedAbout([f64; 4], [f64; 3]),
+}
+
 /// A plain description of one test case.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "arbitrary", derive(arbitrary::Arbitrary))]
@@ -100,6 +118,8 @@ pub struct CaseSpec {
     pub linear: [f64; 3],
     /// Extra scale `10^e` of the linear velocity, `e` in `-6..=6`.
     pub linear_exp: i8,
+    /// The body frame the points are given in.
+    pub frame: BodyFrame,
 }
 
 /// A built case: vertices relative to the rotation centre, motion, direction.
@@ -231,7 +251,6 @@ impl CaseSpec {
         let v = scale3(raw(self.linear, 1.0), lin_scale);
 
         let cast = |p: [f64; 3]| p.map(T::from_f64);
-        let vertices = pts.iter().map(|p| cast(scale3(*p, size))).collect();
         let interval = TimeInterval::try_new(T::from_f64(start), T::from_f64(start + len)).ok()?;
         let motion = RigidMotion::try_new(
             Point3::ORIGIN,
@@ -240,6 +259,48 @@ impl CaseSpec {
             interval,
         )
         .ok()?;
+        // The hard case's points are world lever arms at the epoch; in a
+        // turned body frame they are `Q0^T arm + c` (rounded: the case is
+        // then within rounding of the hard one, and the oracle takes the
+        // rounded points exactly).
+        let (rotation, centre) = match self.frame {
+            BodyFrame::World => (None, [0.0; 3]),
+            BodyFrame::Oriented(q) => (Some(q), [0.0; 3]),
+            BodyFrame::OrientedAbout(q, c) => (Some(q), scale3(raw(c, 1.0), size)),
+        };
+        let rotation = rotation.map(|q| {
+            let q = q.map(|c| finite_clamped(c, 1.0));
+            crate::Rotation::<T>::try_from_quaternion(
+                T::from_f64(q[0]),
+                T::from_f64(q[1]),
+                T::from_f64(q[2]),
+                T::from_f64(q[3]),
+            )
+            .unwrap_or(crate::Rotation::IDENTITY)
+        });
+        let vertices = pts
+            .iter()
+            .map(|p| {
+                let arm = scale3(*p, size);
+                match rotation {
+                    None => cast(arm),
+                    Some(r) => {
+                        let m = r.matrix().map(|row| row.map(Float::to_f64));
+                        let body = [0, 1, 2].map(|j| {
+                            m[0][j] * arm[0] + m[1][j] * arm[1] + m[2][j] * arm[2] + centre[j]
+                        });
+                        cast(body)
+                    }
+                }
+            })
+            .collect();
+        let motion = match rotation {
+            None => motion,
+            Some(r) => motion
+                .with_orientation(r)
+                .try_with_local_centre(Vec3::from_array(cast(centre)))
+                .ok()?,
+        };
         let n = Direction::try_new(Vec3::from_array(cast(n))).ok()?;
         Some(Case {
             vertices,
@@ -295,7 +356,7 @@ pub fn oriented_box_supports<T: Float>(
         .map(|&m| {
             b.support_up_with(
                 Vec3::from_array(m),
-                &crate::rounding::BoxError::new(T::ZERO),
+                &crate::rounding::BoxError::new(T::ZERO, false),
             )
         })
         .collect();

@@ -6,7 +6,7 @@
 #![allow(dead_code, unreachable_pub)]
 
 use motion_bound::reference::{exact, Exact, Real};
-use motion_bound::testkit::{Case, CaseSpec, Layout, Normal, Sweep};
+use motion_bound::testkit::{BodyFrame, Case, CaseSpec, Layout, Normal, Sweep};
 use motion_bound::Float;
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
@@ -64,6 +64,17 @@ pub fn normal() -> impl Strategy<Value = Normal> {
     ]
 }
 
+/// The body frame: mostly the world frame (the hard cases as they are),
+/// often a turned body, sometimes one rotating about a point off its origin.
+pub fn frame() -> impl Strategy<Value = BodyFrame> {
+    let q = [-1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0, -1.0f64..1.0];
+    prop_oneof![
+        3 => Just(BodyFrame::World),
+        2 => q.clone().prop_map(BodyFrame::Oriented),
+        1 => (q, vec3()).prop_map(|(q, c)| BodyFrame::OrientedAbout(q, c)),
+    ]
+}
+
 /// Case descriptions biased to the hard cases.
 pub fn case_spec() -> impl Strategy<Value = CaseSpec> {
     (
@@ -78,6 +89,7 @@ pub fn case_spec() -> impl Strategy<Value = CaseSpec> {
         normal(),
         vec3(),
         prop_oneof![3 => Just(0i8), 1 => -6i8..=6],
+        frame(),
     )
         .prop_map(
             |(
@@ -92,6 +104,7 @@ pub fn case_spec() -> impl Strategy<Value = CaseSpec> {
                 normal,
                 linear,
                 linear_exp,
+                frame,
             )| {
                 CaseSpec {
                     vertices,
@@ -105,6 +118,7 @@ pub fn case_spec() -> impl Strategy<Value = CaseSpec> {
                     normal,
                     linear,
                     linear_exp,
+                    frame,
                 }
             },
         )
@@ -134,6 +148,7 @@ pub fn plain_spec() -> impl Strategy<Value = CaseSpec> {
                 normal: Normal::Free(n),
                 linear,
                 linear_exp: 0,
+                frame: BodyFrame::World,
             },
         )
 }

@@ -160,7 +160,11 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             motion: a,
             err,
             reach,
-            box_err: BoxError::new(a.motion().angle_at(t)),
+            box_err: BoxError::new(
+                a.motion().angle_at(t),
+                !a.motion().orientation().is_identity(),
+            ),
+            lever_extra: a.motion().local_reach(),
             v_l1: a.motion().linear().norm_l1(),
             w_l1: a.motion().angular().norm_l1(),
         };
@@ -170,7 +174,11 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             motion: b,
             err,
             reach,
-            box_err: BoxError::new(b.motion().angle_at(t)),
+            box_err: BoxError::new(
+                b.motion().angle_at(t),
+                !b.motion().orientation().is_identity(),
+            ),
+            lever_extra: b.motion().local_reach(),
             v_l1: b.motion().linear().norm_l1(),
             w_l1: b.motion().angular().norm_l1(),
         };

@@ -8,8 +8,8 @@ use crate::bvh::{BallTree, Leaf};
 use crate::ca::driver::gap_step;
 use crate::ca::{StepResult, Witness};
 use crate::geometry::closest::triangle_triangle;
-use crate::rounding::{gamma, gap_down, step_down, BoxError};
-use crate::{BoundKind, BoundingBall, Direction, Float, Pose, PreparedMotion, Vec3};
+use crate::rounding::{gamma, gap_down, lever_up, step_down, BoxError};
+use crate::{BoundKind, BoundingBall, Direction, Float, Point3, Pose, PreparedMotion, Vec3};
 
 /// What one body contributes at the current time.
 pub(super) struct Placed<'p, T> {
@@ -19,6 +19,8 @@ pub(super) struct Placed<'p, T> {
     pub(super) reach: T,
     /// The rotation's error coefficients for box supports (`|w| t`).
     pub(super) box_err: BoxError<T>,
+    /// `|c|` rounded up, for a rotation centre `c` off the body origin.
+    pub(super) lever_extra: T,
     /// `|v|_1` and `|w|_1` (the crude speed bound's ingredients).
     pub(super) v_l1: T,
     pub(super) w_l1: T,
@@ -51,7 +53,7 @@ impl<T: Float> Placed<'_, T> {
     /// its directed bounds are computed.
     #[inline]
     fn crude_speed(&self, radius: T) -> T {
-        (self.v_l1 + self.w_l1 * radius) * (T::ONE + gamma::<T>(8))
+        (self.v_l1 + self.w_l1 * lever_up(radius, self.lever_extra)) * (T::ONE + gamma::<T>(8))
     }
 
     fn centre(&self, tree: &BallTree<T>, node: u32) -> Vec3<T> {
@@ -220,15 +222,15 @@ impl<T: Float> MeshPair<'_, T> {
         (i, j): (usize, usize),
         (ta, tb): (&[Vec3<T>; 3], &[Vec3<T>; 3]),
         (rates, contact_distance, clearance): (Rates, T, T),
-        (best, witness, normal): (&mut T, &mut Option<Witness<T>>, &mut Option<Vec3<T>>),
+        (best, witness, normal): (&mut T, &mut Option<Witness<T>>, &mut Option<Direction<T>>),
     ) -> Option<StepResult<T>> {
         let (la, lb) = (&self.a.leaves[i], &self.b.leaves[j]);
         self.stats.triangle_pairs += 1;
         let cp = triangle_triangle(ta, tb);
         let w = Witness {
             distance: cp.distance,
-            on_a: cp.on_a,
-            on_b: cp.on_b,
+            on_a: Point3::from_vec3(cp.on_a),
+            on_b: Point3::from_vec3(cp.on_b),
         };
         let dir = Direction::try_new(cp.on_b - cp.on_a);
         if witness.is_none_or(|b: Witness<T>| w.distance < b.distance) {
@@ -239,7 +241,7 @@ impl<T: Float> MeshPair<'_, T> {
             self.closest = Some((la.triangle, lb.triangle));
             return Some(StepResult::Touching {
                 witness: w,
-                normal: dir.ok().map(Direction::get),
+                normal: dir.ok(),
             });
         };
         let nv = n.get();
@@ -250,7 +252,7 @@ impl<T: Float> MeshPair<'_, T> {
         self.seeds.insert(step.to_f64(), (i as u32, j as u32));
         if step < *best {
             *best = step;
-            *normal = Some(nv);
+            *normal = Some(n);
         }
         None
     }
