@@ -1,6 +1,6 @@
 //! Parry's side of the Table 1 scenario (`motion_bound::testkit::table1`),
-//! shared by `benches/toi.rs` and `examples/table1.rs` through `#[path]`, so
-//! that the benchmark and the report run the very same queries.
+//! shared by the `toi` benchmark and the `table1` report, so that both run
+//! the very same queries.
 //! Parry gets the same rotated copies as triangle meshes and the same
 //! motions (checked by [`mapping_error`]).
 
@@ -15,7 +15,7 @@ use parry3d_f64::shape::TriMesh as ParryMesh;
 /// origin (our rotation centre), `linvel = v`, `angvel = w`. Parry places a
 /// local point `r` at `T(c) T(v t) R(w t) T(-c) start r` with
 /// `c = start * local_center = x0`, which is `x0 + v t + R(w t) r`.
-pub(crate) fn parry_motion(m: &RigidMotion<f64>) -> NonlinearRigidMotion {
+pub fn parry_motion(m: &RigidMotion<f64>) -> NonlinearRigidMotion {
     let (c, v, w) = (m.centre(), m.linear(), m.angular());
     NonlinearRigidMotion::new(
         Pose::from_translation(Vector::new(c.x, c.y, c.z)),
@@ -26,7 +26,7 @@ pub(crate) fn parry_motion(m: &RigidMotion<f64>) -> NonlinearRigidMotion {
 }
 
 /// The same rotated copies as parry triangle meshes.
-pub(crate) fn parry_meshes(scene: &KnotScene) -> Vec<ParryMesh> {
+pub fn parry_meshes(scene: &KnotScene) -> Vec<ParryMesh> {
     scene
         .meshes
         .iter()
@@ -43,16 +43,16 @@ pub(crate) fn parry_meshes(scene: &KnotScene) -> Vec<ParryMesh> {
 
 /// What parry's nonlinear shape cast answered for one query.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct ParryAnswer {
+pub struct ParryAnswer {
     /// The time of impact, or `None` when parry found no impact in `[0, 1]`.
-    pub(crate) time: Option<f64>,
+    pub time: Option<f64>,
     /// Whether parry's status was `Failed` (it still returns a time).
-    pub(crate) failed: bool,
+    pub failed: bool,
 }
 
 /// Parry's `cast_shapes_nonlinear` over `[0, 1]` for query `q`, stopping at
 /// penetration (like our initial contact).
-pub(crate) fn parry_toi(meshes: &[ParryMesh], q: &Query) -> ParryAnswer {
+pub fn parry_toi(meshes: &[ParryMesh], q: &Query) -> ParryAnswer {
     let hit = cast_shapes_nonlinear(
         &parry_motion(&q.motion.a),
         &meshes[q.a],
@@ -72,7 +72,7 @@ pub(crate) fn parry_toi(meshes: &[ParryMesh], q: &Query) -> ParryAnswer {
 /// The largest distance, over every vertex of both bodies of `q` at time
 /// `t`, between our placement (`RigidMotion::pose_at`) and parry's
 /// (`NonlinearRigidMotion::position_at_time`): checks [`parry_motion`].
-pub(crate) fn mapping_error(scene: &KnotScene, q: &Query, t: f64) -> f64 {
+pub fn mapping_error(scene: &KnotScene, q: &Query, t: f64) -> f64 {
     let mut worst = 0.0_f64;
     for (mesh, motion) in [
         (&scene.meshes[q.a], &q.motion.a),

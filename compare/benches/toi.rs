@@ -2,8 +2,8 @@
 //! knots: the seed's Table 1 scenario (torus knot vs torus knot at 2.8K, 11K
 //! and 34K triangles), in milliseconds per query.
 //!
-//! The queries (`benches/support/knot_queries.rs`, shared with
-//! `examples/table1.rs`): per size, 8 copies of the knot turned by seeded
+//! The queries (`motion_bound::testkit::table1`, shared with
+//! the `table1` report): per size, 8 copies of the knot turned by seeded
 //! random rotations (built once, outside the timing, with their ball trees),
 //! and a fixed seeded list of [`QUERIES`] fly-bys over `[0, 1]`
 //! (`testkit::toi::fly_by` with spin [`SPIN`] = 2 rad per unit time for A,
@@ -33,7 +33,7 @@
 //! every vertex of both bodies placed by us and by parry at `t = 0.5` must
 //! agree to `1e-12`.
 //!
-//! `cargo bench --bench toi` takes about 4 to 5 minutes on two shared cores
+//! `cargo bench -p motion-bound-compare --bench toi` takes about 4 to 5 minutes on two shared cores
 //! (about 2 of them for parry at 2.8K);
 //! `TOI_SIZES=2.8K cargo bench --bench toi` builds and runs one size (a
 //! comma-separated list of `2.8K`, `11K`, `34K`; criterion's own name filter
@@ -49,12 +49,9 @@ use motion_bound::ca::BoundChoice;
 use motion_bound::scenes::TorusKnotSize;
 
 // The example reads fields (reach, parry's answers) that the benchmark does not.
-#[allow(dead_code)]
-#[path = "support/knot_queries.rs"]
-mod knot_queries;
-
-use knot_queries::{mapping_error, parry_meshes, parry_toi};
 use motion_bound::testkit::table1::{label, KnotScene, SPIN};
+#[allow(dead_code)]
+use motion_bound_compare::parry::{mapping_error, parry_meshes, parry_toi};
 
 /// Queries in each size's list.
 const QUERIES: usize = 200;

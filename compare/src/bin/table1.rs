@@ -5,7 +5,7 @@
 //! queries; and a check of every method against a sampled ground truth.
 //!
 //! ```sh
-//! cargo run --release --example table1 -- [--queries N] [--spin S] [--parry-queries M]
+//! cargo run --release -p motion-bound-compare --bin table1 -- [--queries N] [--spin S] [--parry-queries M]
 //!     [--truth-queries K] [--samples S] [--sizes 2.8K,11K,34K] [--parry-budget SECONDS]
 //! ```
 //!
@@ -13,15 +13,15 @@
 //! truth on the first `K = M` queries with 1000 samples, all sizes, a parry
 //! budget of 120 s per size (`--parry-budget 0` skips parry).
 //!
-//! The queries are those of `cargo bench --bench toi` (the same module,
-//! `benches/support/knot_queries.rs`): 8 seeded random orientations of the
+//! The queries are those of `cargo bench -p motion-bound-compare --bench toi`
+//! (`motion_bound::testkit::table1`): 8 seeded random orientations of the
 //! knot and seeded fly-bys over `[0, 1]` (`testkit::toi::fly_by`), contact
 //! distance `1e-3`, default time tolerance `1e-9` and iteration limit 100, in
 //! `f64`. Each query is timed with `Instant` around making the `MeshPair`
 //! and `time_of_impact` (parry: around `cast_shapes_nonlinear`), NEVQ and EVQ
 //! interleaved query by query. **These timings are a report, not a benchmark
 //! claim**: one pass, on a machine that may be busy; the criterion benchmark
-//! `cargo bench --bench toi` is the measurement to quote.
+//! `cargo bench -p motion-bound-compare --bench toi` is the measurement to quote.
 //!
 //! Ground truth: `testkit::ground_truth::first_sampled_contact`, the first of
 //! `S` evenly spaced times in `[0, 1]` at which the two meshes intersect, by
@@ -49,13 +49,10 @@ use motion_bound::ca::{BoundChoice, CaOutcome, ContactCriterion, TraversalStats}
 use motion_bound::scenes::TorusKnotSize;
 use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
 
-#[path = "../benches/support/knot_queries.rs"]
-mod knot_queries;
-
-use knot_queries::{mapping_error, parry_meshes, parry_toi, ParryAnswer};
 use motion_bound::testkit::table1::{
     label, KnotScene, Query, CONTACT_DISTANCE, ORIENTATIONS, SPIN,
 };
+use motion_bound_compare::parry::{mapping_error, parry_meshes, parry_toi, ParryAnswer};
 
 /// A reported contact later than the first sampled contact by more than this
 /// is LATE.
@@ -532,7 +529,7 @@ fn main() -> ExitCode {
          contact distance {CONTACT_DISTANCE:e}, time tolerance 1e-9, at most 100 iterations."
     );
     println!(
-        "Timings are Instant-based, one pass: a report, not a benchmark (see `cargo bench --bench toi`)."
+        "Timings are Instant-based, one pass: a report, not a benchmark (see `cargo bench -p motion-bound-compare --bench toi`)."
     );
     let mut parry_per_triangle = None;
     let summaries: Vec<_> = args

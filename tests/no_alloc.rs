@@ -1,0 +1,76 @@
+//! A query in a steady loop allocates nothing: the trees are built once,
+//! the mesh stepper's scratch space is a `MeshWorkspace` handed from pair to
+//! pair, and the driver, the bounds and the steppers never touch the heap.
+//! (The allocation counter is `allocation-counter`'s global allocator, which
+//! only this test binary links.)
+
+use motion_bound::ca::{time_of_impact, BallPair, CaParams, MeshPair, MeshWorkspace};
+use motion_bound::scenes::{torus, TorusKnot};
+use motion_bound::testkit::toi::{fly_by, reach, Rng};
+use motion_bound::{BallTree, BoundingBall, Isometry, Point3, RigidMotion, Rotation, Vec3};
+
+#[test]
+fn a_steady_query_loop_allocates_nothing() {
+    let knot = TorusKnot::TREFOIL.mesh::<f64>(60, 8).expect("knot");
+    let ring = torus::<f64>(0.5, 0.08, 32, 8).expect("ring");
+    let (tk, tr) = (
+        BallTree::try_from_mesh(&knot).expect("tree"),
+        BallTree::try_from_mesh(&ring).expect("tree"),
+    );
+    let r = reach(&knot).max(reach(&ring));
+    let mut rng = Rng::new(3);
+    let queries: Vec<_> = (0..60)
+        .map(|k| {
+            let q = fly_by(&mut rng, r, r, 6.0);
+            let turn = Rotation::try_from_axis_angle(Vec3::new(1.0, 2.0, 3.0), 0.1 * k as f64)
+                .expect("valid");
+            let start = Isometry::try_new(turn, q.a.centre().to_vec3()).expect("finite");
+            let a = RigidMotion::try_from_start(start, q.a.linear(), q.a.angular(), 1.0)
+                .expect("valid");
+            (a, q.b)
+        })
+        .collect();
+    let params = CaParams::default().with_contact_distance(1e-3);
+    let mut workspace = MeshWorkspace::new();
+    let run = |workspace: MeshWorkspace<f64>| {
+        let mut ws = workspace;
+        let mut contacts = 0;
+        for (k, (a, b)) in queries.iter().enumerate() {
+            let (ta, tb) = if k % 2 == 0 { (&tk, &tr) } else { (&tr, &tk) };
+            let mut pair = MeshPair::with_workspace(ta, tb, ws);
+            let report = time_of_impact(&mut pair, a, b, &params).expect("valid");
+            contacts += usize::from(report.outcome.contact().is_some());
+            ws = pair.into_workspace();
+            let ball = BoundingBall::try_new(Point3::ORIGIN.to_array(), r).expect("ball");
+            let report = time_of_impact(&mut BallPair::new(ball, ball), a, b, &params).expect("ok");
+            contacts += usize::from(report.outcome.contact().is_some());
+        }
+        (ws, contacts)
+    };
+    // Warm up: the workspace grows to the largest query.
+    let (ws, warm) = run(workspace);
+    workspace = ws;
+    let mut steady = 0;
+    let info = allocation_counter::measure(|| {
+        let (ws, contacts) = run(std::mem::take(&mut workspace));
+        workspace = ws;
+        steady = contacts;
+    });
+    assert_eq!(steady, warm, "the same queries, the same outcomes");
+    assert!(warm > 20, "the loop has contacts to find ({warm})");
+    assert_eq!(
+        info.count_total, 0,
+        "{} allocations ({} bytes) in the steady loop",
+        info.count_total, info.bytes_total
+    );
+    // The counter counts: a fresh pair allocates its workspace as it grows.
+    let (a, b) = &queries[0];
+    let fresh = allocation_counter::measure(|| {
+        let mut pair = MeshPair::new(&tk, &tr);
+        let _ = time_of_impact(&mut pair, a, b, &params);
+    });
+    assert!(
+        fresh.count_total > 0,
+        "a fresh pair allocates its scratch space"
+    );
+}
