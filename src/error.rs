@@ -57,6 +57,15 @@ pub enum InputError {
     ZeroQuaternion,
     /// A duration that is zero or negative.
     NonPositiveDuration,
+    /// A triangle list with no triangle (a ball tree needs one).
+    NoTriangles,
+    /// A triangle names a vertex that does not exist.
+    TriangleIndexOutOfRange {
+        /// The triangle's position in the list.
+        triangle: usize,
+        /// The vertex index it names.
+        index: u32,
+    },
 }
 
 impl fmt::Display for Quantity {
@@ -91,6 +100,13 @@ impl fmt::Display for InputError {
             }
             Self::ZeroQuaternion => f.write_str("quaternion has zero length"),
             Self::NonPositiveDuration => f.write_str("duration is not positive"),
+            Self::NoTriangles => f.write_str("no triangle"),
+            Self::TriangleIndexOutOfRange { triangle, index } => {
+                write!(
+                    f,
+                    "triangle {triangle} names vertex {index}, which does not exist"
+                )
+            }
         }
     }
 }

@@ -17,11 +17,11 @@
 //!   largest `|c(t) . r_i^c|` over the arc swept by `c(t) = R(t)^T (n x w)` in
 //!   the rotation plane; `O(N)` per query and never looser than [`nevq`].
 //!
-//! Every bound is proven in `proofs/` (the printed Eq. 2 is not a valid
-//! bound: `proofs/04-evq-case-split.md` says where and why), is an upper bound
-//! for its floating-point inputs with rounding accounted for
-//! (`proofs/floating-point.md`), and is checked by property tests against an
-//! exact closed-form [`reference`](mod@reference).
+//! Every bound is proven in `proofs/`, rendered in [`proofs`] (the printed
+//! Eq. 2 is not a valid bound: [`proofs::evq_case_split`] says where and
+//! why), is an upper bound for its floating-point inputs with rounding
+//! accounted for ([`proofs::floating_point`]), and is checked by property
+//! tests against an exact closed-form [`reference`](mod@reference).
 //!
 //! ```
 //! use motion_bound::{evq, nevq, Direction, RigidMotion, Vec3, VertexSet};
@@ -52,20 +52,57 @@
 //! # Ok::<(), motion_bound::InputError>(())
 //! ```
 //!
+//! ## Time of impact
+//!
+//! [`ca::time_of_impact`] runs conservative advancement with a stepper: two
+//! meshes through their ball trees ([`ca::MeshPair`]), convex vertex sets with
+//! GJK or an engine's own distance oracle ([`ca::ConvexPair`]), two balls
+//! ([`ca::BallPair`]), or a caller's [`ca::CaStep`]. A body's points and its
+//! [`BallTree`] are built once, in its own frame; each query hands over the
+//! bodies' motions from their start poses.
+//!
+//! ```
+//! use motion_bound::ca::{time_of_impact, CaOutcome, CaParams, MeshPair};
+//! use motion_bound::{BallTree, Isometry, RigidMotion, Rotation, TriMesh, Vec3};
+//! // A tetrahedron, built once in its own frame.
+//! let tet = TriMesh::try_new(
+//!     vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+//!     vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
+//! )?;
+//! let tree = BallTree::try_from_mesh(&tet)?;
+//! // A turned copy flies at a still one over one frame of length 1.
+//! let turned = Rotation::try_from_axis_angle(Vec3::new(1.0, 1.0, 0.0), 0.7)?;
+//! let start = Isometry::try_new(turned, Vec3::new(-3.0, 0.2, 0.0))?;
+//! let a = RigidMotion::try_from_start(start, Vec3::new(4.0, 0.0, 0.0), Vec3::new(0.0, 2.0, 1.0), 1.0)?;
+//! let b = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3])?;
+//! let report = time_of_impact(&mut MeshPair::new(&tree, &tree), &a, &b, &CaParams::default())?;
+//! match report.outcome {
+//!     // Never later than the first time the surfaces come within half the
+//!     // contact distance (`proofs::ca_toi`).
+//!     CaOutcome::Contact { contact, .. } => assert!(contact.time > 0.0 && contact.time < 1.0),
+//!     other => panic!("expected a contact, got {other:?}"),
+//! }
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
 //! ## Conventions
 //!
-//! * **Frame.** All vectors (`n`, `v`, `w`, body points) are in one frame; the
-//!   bounds are invariant under a rigid change of that frame.
-//! * **Body points** ([`BodyPoint`], or `[T; 3]` in a [`VertexSet`]) are
-//!   offsets from the rotation centre at the epoch `t = 0`:
-//!   `p_i(t) = x0 + v t + R(t) r_i`, with `R(t)` the right-handed rotation about
-//!   `w/|w|` by `|w| t`.
-//! * **Time.** Velocities are per unit time; a frame is usually
-//!   [`TimeInterval::UNIT`] `= [0, 1]`. Bounds are taken over the motion's
-//!   interval ([`RigidMotion::restrict`] narrows it).
+//! * **Frames.** `n`, `v`, `w` and positions are world vectors; body points
+//!   are in the body's own frame (the frame its [`VertexSet`] or
+//!   [`BallTree`] is built in). The bounds are invariant under a rigid change
+//!   of the world frame.
+//! * **Motion.** `p(t) = x0 + v t + R(w t) Q0 (r - c)`: `Q0` the start
+//!   orientation (a [`Rotation`]), `c` the rotation centre in the body frame
+//!   (the origin by default), `x0` its world position at the epoch `t = 0`,
+//!   `R(w t)` the right-handed rotation about `w/|w|` by `|w| t`
+//!   ([`RigidMotion`]).
+//! * **Time.** Velocities are per unit time; a motion's interval is any
+//!   `[t_a, t_b]` (a frame `[0, T]` from [`RigidMotion::try_from_start`]);
+//!   [`RigidMotion::restrict`] narrows it and keeps the epoch.
 //! * **Direction.** `n` is the unit closest direction *from the moving body
-//!   towards the obstacle*; the bounds bound `|p'(t) . n|`, so they hold for
-//!   `-n` as well. [`Direction::try_new`] normalises any nonzero vector.
+//!   towards the obstacle*; the absolute bounds bound `|p'(t) . n|` (so they
+//!   hold for `-n` too), the one-sided ones ([`nevq_rate`], [`evq_rate`]) the
+//!   signed `p'(t) . n`. [`Direction::try_new`] normalises any nonzero vector.
 //! * **What is bounded.** [`DirectedBound::speed`] bounds the directed speed
 //!   at every time of the interval (what a CA step `d / mu` needs);
 //!   [`DirectedBound::displacement`] bounds the directed displacement (the
@@ -73,63 +110,51 @@
 //! * **Bad input** gets a typed [`InputError`] at construction; evaluation
 //!   never panics and never returns NaN; `+inf` (sound) only on overflow.
 //!
-//! ## Meshes
-//!
-//! With the `alloc` feature, `TriMesh` owns a validated triangle mesh (the
-//! body points of a non-convex body, offsets from its rotation centre), checks
-//! that it is closed and outward-wound, reads and writes OFF (and OBJ with the
-//! `obj` feature), and hands its vertices to the bounds as a [`VertexSet`];
-//! the `scenes` module builds the seed's torus knots and other test bodies.
 //! ## Distances
 //!
-//! A CA step needs the distance `d` and the direction `n` as well as the
-//! bound `mu`. [`triangle_triangle`] (with [`point_triangle`] and
-//! [`segment_segment`]) gives the exact Euclidean distance of two triangles
-//! with witness points, and [`gjk_distance`] the distance of two convex
-//! bodies given by a [`SupportMap`], such as a [`ConvexPolytope`] placed by a
-//! [`Pose`]. GJK's `distance` may over-estimate (by about its relative
-//! tolerance when converged); its `lower_bound` is certified, with the
-//! rounding of the support maps accounted for, and holds along its
-//! `direction`: use that pair for a step. See [`GjkResult`].
-//!
-//! ```
-//! use motion_bound::{gjk_distance, ConvexPolytope, GjkParams, Pose, Vec3};
-//! let tet = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-//! let a = ConvexPolytope::try_new(&tet, Pose::IDENTITY)?;
-//! let b = a.with_pose(Pose::from_translation(Vec3::new(0.0, 0.0, 2.5)))?;
-//! let r = gjk_distance(&a, &b, &GjkParams::default());
-//! assert!(r.lower_bound <= 1.5 && r.lower_bound > 1.5 - 1e-12);
-//! assert_eq!(r.direction, Some(Vec3::new(0.0, 0.0, 1.0)));
-//! # Ok::<(), motion_bound::InputError>(())
-//! ```
+//! [`triangle_triangle`] (with [`point_triangle`] and [`segment_segment`])
+//! gives the exact Euclidean distance of two triangles with witness points,
+//! and [`gjk_distance`] the distance of two convex bodies given by a
+//! [`SupportMap`], such as a [`ConvexPolytope`] placed by a [`Pose`]. GJK's
+//! `distance` may over-estimate; its `lower_bound` is certified along its
+//! `direction`. See [`GjkResult`].
 //!
 //! ## Precision
 //!
 //! Both `f32` (what game engines use) and `f64` are supported through one
 //! generic code path over the sealed trait [`Float`], because the error
-//! analysis is the same formula in the unit roundoff `u` of either type: two
-//! monomorphic modules would duplicate the proofs' constants for no gain.
+//! analysis is the same formula in the unit roundoff `u` of either type.
+//!
+//! ## Proofs
+//!
+//! Every lemma is written out in `proofs/` and rendered in [`proofs`]: the
+//! bounds ([`proofs::nevq`], [`proofs::evq_case_split`]), conservative
+//! advancement ([`proofs::ca_toi`]) and the rounding analysis
+//! ([`proofs::floating_point`]), each naming the tests that check it.
 //!
 //! ## Feature flags
 //!
 //! | feature | default | what it adds |
 //! |---|---|---|
-//! | `std` | yes | float functions from `std` |
+//! | `std` | yes | float functions from `std`; implies `alloc` |
 //! | `libm` | no | float functions from `libm`; with `std` off the crate is `#![no_std]` (and allocation-free unless `alloc` is on) |
-//! | `alloc` | no | owned meshes (`TriMesh`), OFF input and output, the `scenes` generators; needs no `std` |
+//! | `alloc` | with `std` | owned meshes ([`TriMesh`]), ball trees ([`BallTree`]), the mesh stepper, OFF input and output; needs no `std` |
+//! | `scenes` | no | built-in bodies ([`scenes`]): the seed's torus knots, tori, boards, boxes, icospheres |
 //! | `obj` | no | OBJ input with `tobj` (`TriMesh::from_obj_str`); implies `std` and `alloc` |
-//! | `mint` | no | conversions to and from `mint` vectors (glam, nalgebra, cgmath interop) |
+//! | `mint` | no | conversions to and from `mint` vectors, points and quaternions (glam, nalgebra and cgmath interop) |
 //! | `approx` | no | `approx` comparison traits on the public vector types |
-//! | `reference` | no | the exact closed-form oracle ([`reference`](mod@reference)) |
-//! | `faer` | no | batched dense sampling of the oracle with faer ([`reference::sampled`]) |
-//! | `testkit` | no | shared hard-case generators for tests, fuzzing and benchmarks, the time-of-impact ground truth, and an exact triangle intersection test written apart from the core's; implies `alloc` |
-//! | `arbitrary` | no | `Arbitrary` case descriptions for `cargo fuzz` |
+//! | `reference` | no | **test support**: the exact closed-form oracle ([`reference`](mod@reference)) |
+//! | `faer` | no | **test support**: batched dense sampling of the oracle with faer |
+//! | `testkit` | no | **test support**: hard-case generators, the time-of-impact ground truth, the Table 1 scenes ([`testkit`]) |
+//! | `arbitrary` | no | **test support**: `Arbitrary` case descriptions for `cargo fuzz` |
 //!
-//! The core's one dependency is [`robust`] (Shewchuk's adaptive predicates,
-//! `no_std` and allocation-free): the exact fallback of the filtered
-//! orientation predicates with which [`triangle_triangle`] decides meeting.
+//! The core's one dependency is [robust](https://crates.io/crates/robust)
+//! (Shewchuk's adaptive predicates, `no_std` and allocation-free): the exact
+//! fallback of the filtered orientation predicates with which
+//! [`triangle_triangle`] decides meeting.
 
 #![cfg_attr(not(feature = "std"), no_std)]
+#![cfg_attr(docsrs, feature(doc_cfg))]
 #![forbid(unsafe_code)]
 #![warn(missing_docs, unreachable_pub, clippy::missing_assert_message)]
 
@@ -154,21 +179,25 @@ mod motion;
 mod rounding;
 mod shape;
 
+pub mod proofs;
 #[cfg(feature = "reference")]
+#[cfg_attr(docsrs, doc(cfg(feature = "reference")))]
 pub mod reference;
 #[cfg(feature = "scenes")]
+#[cfg_attr(docsrs, doc(cfg(feature = "scenes")))]
 pub mod scenes;
 #[cfg(feature = "testkit")]
+#[cfg_attr(docsrs, doc(cfg(feature = "testkit")))]
 pub mod testkit;
 
 pub use bound::directed::{BoundKind, DirectedBound};
 pub use bound::directed_bound;
 #[cfg(feature = "testkit")]
 pub use bound::evq::evq_speed_unmargined;
-pub use bound::evq::{evq, evq_speed};
+pub use bound::evq::{evq, evq_rate, evq_speed};
 #[cfg(feature = "testkit")]
 pub use bound::nevq::nevq_speed_unmargined;
-pub use bound::nevq::{nevq, nevq_speed};
+pub use bound::nevq::{nevq, nevq_rate, nevq_speed};
 pub use bound::probe::DirectedProbe;
 #[cfg(feature = "alloc")]
 pub use bvh::BallTree;

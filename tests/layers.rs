@@ -15,7 +15,7 @@
 //! | 6 | `mesh` (triangle meshes and their files) |
 //! | 7 | `bvh` (ball trees) |
 //! | 8 | `ca` (conservative advancement) |
-//! | 9 | `scenes`, `reference`, `testkit`, `features` |
+//! | 9 | `scenes`, `reference`, `testkit`, `features`, `proofs` (documents only) |
 //!
 //! How it checks: every `crate::...` path in the code (comments and doc
 //! comments stripped, so doc links and doctests do not count) is resolved to
@@ -27,7 +27,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
 use std::path::{Path, PathBuf};
 
-const LAYERS: [(&str, u32); 16] = [
+const LAYERS: [(&str, u32); 17] = [
     ("float", 0),
     ("error", 0),
     ("rounding", 0),
@@ -43,6 +43,7 @@ const LAYERS: [(&str, u32); 16] = [
     ("reference", 9),
     ("testkit", 9),
     ("features", 9),
+    ("proofs", 9),
     ("lib", 10),
 ];
 

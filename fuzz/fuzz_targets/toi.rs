@@ -16,7 +16,9 @@
 //!
 //! The input is raw bytes read as bounded numbers (missing bytes read as
 //! zero): vertices in `[-1, 1]^3`, centres within 3 of the origin, speeds up
-//! to 6, angular speeds up to 20 rad per unit time, over `[0, 1]`.
+//! to 6, angular speeds up to 20 rad per unit time, over `[0, 1]`; then, for
+//! each body, a start orientation (a quaternion) and a rotation centre off
+//! the body origin, or neither.
 
 #![no_main]
 
@@ -25,7 +27,7 @@ use motion_bound::ca::{
     time_of_impact, BoundChoice, CaOutcome, CaParams, ContactCriterion, MeshPair, MeshParams,
 };
 use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
-use motion_bound::{BallTree, RigidMotion};
+use motion_bound::{BallTree, RigidMotion, Rotation, Vec3};
 use motion_bound_fuzz::Bytes;
 
 /// Ground-truth samples over `[0, 1]`.
@@ -75,6 +77,26 @@ fn run(data: &[u8]) {
     let far = [6.0, 0.5, f64::INFINITY][usize::from(b.u8() % 3)];
     let accept = [1.0, 0.5][usize::from(b.u8() % 2)];
     let one_sided = b.u8().is_multiple_of(2);
+    // A start orientation and a rotation centre off the body origin, read
+    // last so that older inputs keep their meaning (identity, origin).
+    let turned = |m: RigidMotion<f64>, b: &mut Bytes<'_>| match b.u8() % 3 {
+        0 => m,
+        k => {
+            let q = [0; 4].map(|_| b.range(-1.0, 1.0));
+            let m = match Rotation::try_from_quaternion(q[0], q[1], q[2], q[3]) {
+                Ok(r) => m.with_orientation(r),
+                Err(_) => m,
+            };
+            if k == 2 {
+                m.try_with_local_centre(Vec3::from_array(vector(b, 1.0)))
+                    .expect("a bounded centre")
+            } else {
+                m
+            }
+        }
+    };
+    let ma = turned(ma, &mut b);
+    let mb = turned(mb, &mut b);
     let params = CaParams::default()
         .with_bound(bound)
         .with_contact_distance(contact)

@@ -422,10 +422,7 @@ mod tests {
         speed: T,
         displacement: T,
     ) -> bool {
-        let bound = DirectedBound {
-            speed,
-            displacement,
-        };
+        let bound = DirectedBound::new(speed, displacement);
         let hook = std::panic::take_hook();
         std::panic::set_hook(Box::new(|_| {})); // the rejections are expected
         let ok = catch_unwind(AssertUnwindSafe(|| {

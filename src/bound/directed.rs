@@ -3,7 +3,14 @@
 use crate::rounding::displacement_up;
 use crate::{Float, RigidMotion};
 
-/// Which directed bound a query uses.
+/// Which directed bound one evaluation computes: NEVQ or EVQ.
+///
+/// This is the choice for a single bound ([`directed_bound`](crate::directed_bound),
+/// [`DirectedProbe::speed`](crate::DirectedProbe::speed)). A
+/// conservative-advancement query chooses with
+/// [`ca::BoundChoice`](crate::ca::BoundChoice) instead, a policy over its
+/// many bounds: `Nevq` and `Evq` use this kind everywhere, `Auto` picks one
+/// per evaluation by its cost ([`BoundChoice::cheap_kind`](crate::ca::BoundChoice::cheap_kind)).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum BoundKind {
@@ -34,6 +41,7 @@ pub enum BoundKind {
 /// rounding accounted for (`proofs/floating-point.md`); `+inf` is returned
 /// only if a bound overflows, and NaN never.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct DirectedBound<T> {
     /// Upper bound of the directed speed at every time of the interval.
     pub speed: T,
@@ -42,6 +50,16 @@ pub struct DirectedBound<T> {
 }
 
 impl<T: Float> DirectedBound<T> {
+    /// A bound with these values (for a caller's own bound, or a test).
+    #[inline]
+    #[must_use]
+    pub const fn new(speed: T, displacement: T) -> Self {
+        Self {
+            speed,
+            displacement,
+        }
+    }
+
     pub(crate) fn from_speed(speed: T, motion: &RigidMotion<T>) -> Self {
         Self {
             speed,
@@ -61,11 +79,11 @@ impl<T: Float> DirectedBound<T> {
     ///
     /// ```
     /// use motion_bound::DirectedBound;
-    /// let b = DirectedBound { speed: 2.0, displacement: 2.0 };
+    /// let b = DirectedBound::new(2.0, 2.0);
     /// assert_eq!(b.time_to_close(1.0), 0.5);
     /// assert_eq!(b.time_to_close(-3.0), 0.0);
     /// assert_eq!(b.time_to_close(f64::NAN), 0.0);
-    /// let still = DirectedBound { speed: 0.0, displacement: 0.0 };
+    /// let still = DirectedBound::new(0.0, 0.0);
     /// assert_eq!(still.time_to_close(1.0), f64::INFINITY);
     /// assert_eq!(still.time_to_close(-1.0), 0.0);
     /// ```

@@ -64,6 +64,27 @@ pub fn evq_speed<T: Float>(body: &VertexSet<'_, T>, motion: &RigidMotion<T>, n: 
     PreparedMotion::new(motion).probe(n).evq_speed(body)
 }
 
+/// The one-sided EVQ bound: an upper bound of the *signed* speed
+/// `d/dt (p_i(t) . n)` of every vertex over the motion's interval, by the
+/// one-sided case split (does the arc reach each point's direction `+q`?
+/// `proofs/10-one-sided.md`, Lemma 10.1), rounded up; never above
+/// [`nevq_rate`](crate::nevq_rate) (it takes the smaller).
+///
+/// ```
+/// use motion_bound::{evq_rate, nevq_rate, Direction, RigidMotion, VertexSet};
+/// let rod = VertexSet::try_new(&[[1.0, 0.0, 0.0], [-1.0, 0.0, 0.0]]).unwrap();
+/// // Turning slowly about z: along y the ends move at +-0.1 cos(theta).
+/// let m = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0, 0.0, 0.1]).unwrap();
+/// let rate = evq_rate(&rod, &m, Direction::Y);
+/// assert!(rate >= 0.1 && rate <= nevq_rate(&rod.summary(), &m, Direction::Y));
+/// ```
+#[must_use]
+pub fn evq_rate<T: Float>(body: &VertexSet<'_, T>, motion: &RigidMotion<T>, n: Direction<T>) -> T {
+    PreparedMotion::new(motion)
+        .probe(n)
+        .rate(body, crate::BoundKind::Evq)
+}
+
 /// The EVQ speed in plain floating point, without any rounding margin:
 /// `fl(|v.n| + |c| E^)`. Not a sound bound; exposed only so that tests can
 /// show the margin is needed (`proofs/floating-point.md`, "Power").

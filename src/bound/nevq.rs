@@ -1,6 +1,6 @@
 //! The NEVQ bound: the seed's Eq. 3.
 
-use crate::bound::projection::{nevq_speed_from, Projection};
+use crate::bound::projection::{nevq_rate_from, nevq_speed_from, Projection};
 use crate::rounding::lever_up;
 use crate::{BodySummary, DirectedBound, Direction, Float, RigidMotion};
 
@@ -29,6 +29,28 @@ pub fn nevq<T: Float>(
     n: Direction<T>,
 ) -> DirectedBound<T> {
     DirectedBound::from_speed(nevq_speed(body, motion, n), motion)
+}
+
+/// The one-sided NEVQ bound: an upper bound of the *signed* speed
+/// `d/dt (p(t) . n)` of every point of the body over the motion's interval,
+/// `v.n + |n x w| max_i |r_i|` rounded up (`proofs/10-one-sided.md`). What a
+/// conservative-advancement step needs of one body: the rate at which it
+/// closes a gap along `n`. Negative when the body recedes along `n` faster
+/// than it can turn towards it.
+///
+/// ```
+/// use motion_bound::{nevq, nevq_rate, BodySummary, Direction, RigidMotion};
+/// let body = BodySummary::from_radius(1.0).unwrap();
+/// // Moving away along -x at 3, spinning at 1 rad per unit time about z.
+/// let m = RigidMotion::try_from_arrays([0.0; 3], [-3.0, 0.0, 0.0], [0.0, 0.0, 1.0]).unwrap();
+/// let rate = nevq_rate(&body, &m, Direction::X);
+/// assert!(rate < -1.99 && rate >= -2.0); // -3 + 1 * 1
+/// assert!(nevq(&body, &m, Direction::X).speed >= 4.0); // the absolute bound
+/// ```
+#[must_use]
+pub fn nevq_rate<T: Float>(body: &BodySummary<T>, motion: &RigidMotion<T>, n: Direction<T>) -> T {
+    let p = Projection::new(motion, n);
+    nevq_rate_from(&p, lever_up(body.max_radius(), motion.local_reach()))
 }
 
 /// The NEVQ speed bound alone (see [`nevq`]).

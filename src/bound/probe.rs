@@ -1,7 +1,7 @@
 //! Directed bounds for one motion along one direction, for many bodies:
 //! vertex sets, bounding balls, body summaries.
 
-use crate::bound::projection::{nevq_speed_from, Projection};
+use crate::bound::projection::{nevq_rate_from, nevq_speed_from, Projection};
 use crate::bound::scan::{arc_scan, arc_signed_scan, full_turn_scan};
 use crate::rounding::{
     assemble, evq_rotational_up, gamma, lever_up, nevq_rotational_up, one_sided_decision_slack,
@@ -192,7 +192,12 @@ impl<T: Float> DirectedProbe<T> {
     /// an upper bound of the *signed* speed `d/dt (p(t) . n)` (along the
     /// exact unit `n/|n|`) over the motion's interval, for every point `p`
     /// of the ball. Negative when every point of the ball recedes along `n`
-    /// throughout, and never above [`ball_speed`](Self::ball_speed).
+    /// throughout. In exact arithmetic it is never above
+    /// [`ball_speed`](Self::ball_speed); in floating point the two carry
+    /// different rounding margins, so it may exceed it by at most
+    /// `64 u (sum_k |v_k n_k| + (|n x w| + |w|_1) R) + 64 eta`
+    /// (`proofs/10-one-sided.md`, "Floating point"): take the smaller of the
+    /// two if you need both orders.
     ///
     /// Conservative advancement needs only this one side: two bodies
     /// separated along `n` close at most at the rate of A along `n` plus
@@ -232,12 +237,11 @@ impl<T: Float> DirectedProbe<T> {
         one_sided_up(self.p.a, self.p.a_mag, rot, rot.abs(), margin).min_nan(nevq)
     }
 
-    /// The one-sided NEVQ bound `a + |n x w| R` for points within `lever`
-    /// of the rotation centre, rounded up (`proofs/10-one-sided.md`).
+    /// The one-sided NEVQ bound for points within `lever` of the rotation
+    /// centre.
     #[inline]
     fn nevq_rate(&self, lever: T) -> T {
-        let rot = nevq_rotational_up(self.p.nevq_c_norm, self.p.nevq_w_l1, lever);
-        one_sided_up(self.p.a, self.p.a_mag, rot, rot, T::ZERO)
+        nevq_rate_from(&self.p, lever)
     }
 
     /// The one-sided speed bound of kind `kind` for a vertex set (see

@@ -1,6 +1,6 @@
 //! The per-direction quantities of one motion that every bound shares.
 
-use crate::rounding::{assemble, linear_up, nevq_rotational_up};
+use crate::rounding::{assemble, linear_up, nevq_rotational_up, one_sided_up};
 use crate::{Direction, Float, RigidMotion, Vec3};
 
 /// The per-query quantities both bounds share: `a = v.n`, and `c = n x w`
@@ -66,6 +66,14 @@ impl<T: Float> Projection<T> {
     pub(crate) fn linear_up(&self) -> T {
         linear_up(self.a, self.a_mag)
     }
+}
+
+/// The one-sided NEVQ bound `a + |n x w| R` for points within `lever` of the
+/// rotation centre, rounded up (`proofs/10-one-sided.md`).
+#[inline]
+pub(crate) fn nevq_rate_from<T: Float>(p: &Projection<T>, lever: T) -> T {
+    let rot = nevq_rotational_up(p.nevq_c_norm, p.nevq_w_l1, lever);
+    one_sided_up(p.a, p.a_mag, rot, rot, T::ZERO)
 }
 
 /// The NEVQ speed bound for points within `r_hat` of the rotation centre.

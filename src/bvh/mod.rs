@@ -82,16 +82,13 @@ impl<T: Float> BallTree<T> {
     /// Builds the hierarchy of `triangles` (indices into `vertices`).
     ///
     /// # Errors
-    /// [`InputError::EmptyVertexSet`] when there is no triangle, and the
-    /// core's range errors for vertices or radii out of range.
-    ///
-    /// # Panics
-    /// Never; an index out of range is reported as
-    /// [`InputError::NonFinite`] of [`Quantity::Vertex`](crate::Quantity::Vertex)
-    /// with the index (meshes built by [`TriMesh`](crate::mesh::TriMesh) never have one).
+    /// [`InputError::NoTriangles`] when there is no triangle,
+    /// [`InputError::TriangleIndexOutOfRange`] for an index past the vertices
+    /// (meshes built by [`TriMesh`](crate::TriMesh) never have one), and the
+    /// core's range errors for vertices out of range.
     pub fn try_new(vertices: &[[T; 3]], triangles: &[[u32; 3]]) -> Result<Self, InputError> {
         if triangles.is_empty() {
-            return Err(InputError::EmptyVertexSet);
+            return Err(InputError::NoTriangles);
         }
         let mut leaves = Vec::with_capacity(triangles.len());
         for (k, tri) in triangles.iter().enumerate() {
@@ -99,7 +96,10 @@ impl<T: Float> BallTree<T> {
             for (c, &i) in corners.iter_mut().zip(tri) {
                 *c = *vertices
                     .get(i as usize)
-                    .ok_or(InputError::NonFinite(crate::Quantity::Vertex(i as usize)))?;
+                    .ok_or(InputError::TriangleIndexOutOfRange {
+                        triangle: k,
+                        index: i,
+                    })?;
             }
             let set = crate::VertexSet::try_new(&corners)?;
             leaves.push(Leaf {
@@ -384,9 +384,17 @@ mod tests {
     #[test]
     fn bad_meshes_are_typed_errors() {
         let v = [[0.0f32; 3]; 3];
-        assert!(BallTree::try_new(&v, &[]).is_err(), "no triangle");
-        assert!(
-            BallTree::try_new(&v, &[[0, 1, 3]]).is_err(),
+        assert_eq!(
+            BallTree::try_new(&v, &[]).err(),
+            Some(crate::InputError::NoTriangles),
+            "no triangle"
+        );
+        assert_eq!(
+            BallTree::try_new(&v, &[[0, 1, 2], [0, 1, 3]]).err(),
+            Some(crate::InputError::TriangleIndexOutOfRange {
+                triangle: 1,
+                index: 3
+            }),
             "index out of range"
         );
     }

@@ -50,7 +50,7 @@ impl<T, F: FnMut(&Pose<T>, &Pose<T>) -> Option<Witness<T>>> Proximity<T> for F {
 ///             let (a, b) = (pa.transform_point(Vec3::from_array(*p)), pb.transform_point(Vec3::from_array(*q)));
 ///             let d = (b - a).length();
 ///             if best.map_or(true, |w| d < w.distance) {
-///                 best = Some(Witness { distance: d, on_a: Point3::from_vec3(a), on_b: Point3::from_vec3(b) });
+///                 best = Some(Witness::new(d, Point3::from_vec3(a), Point3::from_vec3(b)));
 ///             }
 ///         }
 ///     }

@@ -5,6 +5,7 @@ use crate::{Direction, Float, Point3};
 /// Closest features at one time: the distance and a witness point on each
 /// body (in the world frame).
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct Witness<T> {
     /// The distance found between the bodies (for a contact, at most the
     /// contact distance).
@@ -16,6 +17,18 @@ pub struct Witness<T> {
 }
 
 impl<T: Float> Witness<T> {
+    /// The closest features `on_a`, `on_b` at `distance` apart (what a
+    /// [`Proximity`](crate::ca::Proximity) oracle returns).
+    #[inline]
+    #[must_use]
+    pub const fn new(distance: T, on_a: Point3<T>, on_b: Point3<T>) -> Self {
+        Self {
+            distance,
+            on_a,
+            on_b,
+        }
+    }
+
     /// The unit direction from `on_a` to `on_b`, or `None` when the witness
     /// points coincide (a touching contact has no defined direction from the
     /// points alone).
@@ -36,6 +49,7 @@ impl<T: Float> Witness<T> {
 /// towards touching, so it is not necessarily the first time the distance
 /// fell to the contact distance.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct Contact<T> {
     /// The reported time of contact; never later than the first time the
     /// surfaces touch.
@@ -119,6 +133,7 @@ impl<T: Float> CaOutcome<T> {
 
 /// The outcome with the number of iterations (calls of the stepper) it took.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct CaReport<T> {
     /// What ended the query.
     pub outcome: CaOutcome<T>,

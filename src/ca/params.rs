@@ -4,7 +4,10 @@ use core::fmt;
 
 use crate::{BoundKind, Float};
 
-/// Which directed bound a conservative-advancement query uses.
+/// Which directed bound a conservative-advancement query uses: a policy over
+/// its many bounds, where [`BoundKind`] is the choice for one evaluation.
+/// `Nevq` and `Evq` use that kind everywhere; `Auto` (the default) takes EVQ
+/// wherever it costs `O(1)` and decides per step on vertex sets.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum BoundChoice {
@@ -40,6 +43,7 @@ impl BoundChoice {
 /// assert!(p.validate().is_ok());
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct CaParams<T> {
     /// Contact is declared when the distance is at most this (in the scene's
     /// length unit; for meshes, the distance between their surfaces), at the

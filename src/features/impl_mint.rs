@@ -1,7 +1,7 @@
 //! Conversions to and from `mint`, the interop types glam, nalgebra and
 //! cgmath all convert to.
 
-use crate::{BodyPoint, Direction, Float, InputError, Point3, Vec3};
+use crate::{BodyPoint, Direction, Float, InputError, Point3, Rotation, Vec3};
 
 impl<T: Float> From<mint::Vector3<T>> for Vec3<T> {
     fn from(v: mint::Vector3<T>) -> Self {
@@ -64,9 +64,60 @@ impl<T: Float> From<Direction<T>> for mint::Vector3<T> {
     }
 }
 
+/// A body's orientation from an engine's quaternion (`s` the real part,
+/// `v` the vector part), normalised ([`Rotation::try_from_quaternion`]).
+impl<T: Float> TryFrom<mint::Quaternion<T>> for Rotation<T> {
+    type Error = InputError;
+    fn try_from(q: mint::Quaternion<T>) -> Result<Self, InputError> {
+        Self::try_from_quaternion(q.s, q.v.x, q.v.y, q.v.z)
+    }
+}
+
+impl<T: Float> From<Rotation<T>> for mint::Quaternion<T> {
+    fn from(r: Rotation<T>) -> Self {
+        let [w, x, y, z] = r.quaternion();
+        Self {
+            s: w,
+            v: mint::Vector3 { x, y, z },
+        }
+    }
+}
+
 #[cfg(test)]
 mod tests {
-    use crate::{Direction, Point3, Vec3};
+    use crate::{Direction, Point3, Rotation, Vec3};
+
+    #[test]
+    fn quaternions_round_trip_through_mint() {
+        let q = mint::Quaternion {
+            s: 2.0f64,
+            v: mint::Vector3 {
+                x: 0.0,
+                y: 0.0,
+                z: 2.0,
+            },
+        };
+        let r = Rotation::try_from(q).expect("nonzero");
+        let v = r.rotate(Vec3::new(1.0, 0.0, 0.0));
+        assert!(
+            (v - Vec3::new(0.0, 1.0, 0.0)).length() < 1e-15,
+            "a quarter turn"
+        );
+        let back: mint::Quaternion<f64> = r.into();
+        assert!(
+            (back.s - 0.5f64.sqrt()).abs() < 1e-15 && back.v.x == 0.0,
+            "normalised"
+        );
+        let zero = mint::Quaternion {
+            s: 0.0f32,
+            v: mint::Vector3 {
+                x: 0.0,
+                y: 0.0,
+                z: 0.0,
+            },
+        };
+        assert!(Rotation::try_from(zero).is_err(), "no rotation");
+    }
 
     #[test]
     fn round_trips_through_mint() {

@@ -31,6 +31,7 @@ use crate::{Float, Vec3};
 /// one is returned is decided by rounding. So is the direction
 /// `on_b - on_a` derived from them.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct ClosestPoints<T> {
     /// The Euclidean distance between the sets, `|on_b - on_a|`.
     pub distance: T,

@@ -49,7 +49,7 @@ use super::simplex::nearest;
 /// let a = Ball { centre: Vec3::ZERO, radius: 1.0 };
 /// let b = Ball { centre: Vec3::new(3.0, 0.0, 0.0), radius: 1.0 };
 /// // Smooth bodies converge only asymptotically: loosen the tolerance.
-/// let params = GjkParams { rel_tol: 1e-6, ..GjkParams::default() };
+/// let params = GjkParams::default().with_rel_tol(1e-6);
 /// let r = gjk_distance(&a, &b, &params);
 /// assert!(r.lower_bound <= 1.0 && r.distance >= r.lower_bound);
 /// assert!(r.distance - 1.0 < 1e-5);
@@ -200,6 +200,7 @@ impl<T: Float> SupportMap<T> for ConvexPolytope<'_, T> {
 
 /// Termination controls for [`gjk_distance`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct GjkParams<T> {
     /// Stop when the gap between the current estimate `|v|` and the
     /// iteration's lower bound `w . v / |v|` is at most `rel_tol |v|`
@@ -218,6 +219,22 @@ impl<T: Float> Default for GjkParams<T> {
             rel_tol: T::from_u32(256) * T::UNIT_ROUNDOFF,
             max_iterations: 64,
         }
+    }
+}
+
+impl<T: Float> GjkParams<T> {
+    /// With another relative tolerance.
+    #[must_use]
+    pub const fn with_rel_tol(mut self, rel_tol: T) -> Self {
+        self.rel_tol = rel_tol;
+        self
+    }
+
+    /// With another iteration limit.
+    #[must_use]
+    pub const fn with_max_iterations(mut self, max_iterations: u32) -> Self {
+        self.max_iterations = max_iterations;
+        self
     }
 }
 
@@ -256,6 +273,7 @@ impl<T: Float> Default for GjkParams<T> {
 ///   therefore use `lower_bound` (an over-estimate of the distance makes the
 ///   step too long), and `direction` as its `n`.
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
 pub struct GjkResult<T> {
     /// The estimated distance `|on_b - on_a|` (0 when intersecting).
     pub distance: T,

@@ -51,6 +51,7 @@ pub enum MeshError {
 
 /// Where and why an OFF file could not be read.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct OffError {
     /// The 1-based line number (`0` for an empty input).
     pub line: usize,

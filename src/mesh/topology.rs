@@ -18,6 +18,7 @@ use crate::{Float, TriMesh};
 /// edge occurs once and its reverse occurs once too: every edge is then
 /// shared by exactly two triangles that run along it in opposite directions.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct EdgeReport {
     /// Distinct undirected edges (a degenerate triangle's edge `a->a` is not
     /// counted).

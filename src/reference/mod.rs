@@ -1,5 +1,6 @@
-//! The exact reference (the oracle): closed-form directed speed and
-//! displacement, independent of the bound code.
+//! **Test support** (the `reference` feature): the exact reference (the
+//! oracle), closed-form directed speed and displacement, independent of the
+//! bound code.
 //!
 //! For a body point `r`, Rodrigues' formula gives
 //! `R(t) r = r cos(theta) + (k x r) sin(theta) + k (k.r)(1 - cos(theta))` with

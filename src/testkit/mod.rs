@@ -1,4 +1,7 @@
-//! Shared hard-case generators for property tests, fuzzing and benchmarks.
+//! **Test support** (the `testkit` feature): shared hard-case generators for
+//! property tests, fuzzing and benchmarks, the time-of-impact ground truth
+//! and the Table 1 scenes. Not part of the engine API; its items may change
+//! with the tests.
 //!
 //! A [`CaseSpec`] is a plain description (numbers and small enums) of a body,
 //! a motion and a direction, biased towards the cases where bounds break:

@@ -5,7 +5,7 @@
 //! For each knot size: [`ORIENTATIONS`] copies of the knot, each turned by a
 //! seeded random rotation baked into its body points, with their ball trees,
 //! all built once; then a seeded list of fly-by queries
-//! ([`fly_by`](super::toi::fly_by)): query `i` flies copy `i % 8` past copy
+//! ([`fly_by`]): query `i` flies copy `i % 8` past copy
 //! `(i + 3) % 8` over `[0, 1]`, A spinning at up to `spin` rad per unit time,
 //! B at up to `spin / 4`. The random stream does not depend on the size or
 //! on the number of queries, so the first `N` queries are the same list (up

@@ -3,6 +3,7 @@
 /// Work counters of a [`MeshPair`](super::MeshPair), summed over every step since the last
 /// [`MeshPair::reset_stats`](super::MeshPair::reset_stats): what a profile of the query needs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct TraversalStats {
     /// Node pairs popped from the best-first queue and worked on (split,
     /// settled, or a leaf pair measured; a seed's leaf pair popped again is

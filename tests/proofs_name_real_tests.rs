@@ -1,0 +1,165 @@
+//! Every test a proof names exists: each lemma in `proofs/` says which tests
+//! check it, and a renamed or deleted test must not leave a proof pointing
+//! at nothing.
+//!
+//! Read from every `proofs/*.md`, in backticks: file paths (`tests/x.rs`,
+//! `src/.../x.rs`, `fuzz/fuzz_targets/x.rs`) must exist; `file::name` must
+//! name a function in that file; other paths (`module::tests::name`) and bare
+//! snake-case names of at least four words must name a function, module or
+//! file of the repository. `{a,b}` alternatives are expanded.
+
+use std::collections::BTreeSet;
+use std::fs;
+use std::path::{Path, PathBuf};
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Every `.rs` file of the repository's own code (not build output).
+fn sources() -> Vec<PathBuf> {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
+        let Ok(entries) = fs::read_dir(dir) else {
+            return;
+        };
+        for e in entries.flatten() {
+            let p = e.path();
+            let name = p.file_name().and_then(|n| n.to_str()).unwrap_or("");
+            if p.is_dir() {
+                if name != "target" && name != "corpus" && !name.starts_with('.') {
+                    walk(&p, out);
+                }
+            } else if name.ends_with(".rs") {
+                out.push(p);
+            }
+        }
+    }
+    let mut out = Vec::new();
+    for d in [
+        "src", "tests", "fuzz", "examples", "benches", "compare", "ci-nostd",
+    ] {
+        walk(&root().join(d), &mut out);
+    }
+    out
+}
+
+/// `a_{x,y}_b` -> `a_x_b`, `a_y_b` (every group, left to right).
+fn expand(s: &str) -> Vec<String> {
+    match (s.find('{'), s.find('}')) {
+        (Some(i), Some(j)) if i < j => s[i + 1..j]
+            .split(',')
+            .flat_map(|alt| expand(&format!("{}{}{}", &s[..i], alt.trim(), &s[j + 1..])))
+            .collect(),
+        _ => vec![s.to_owned()],
+    }
+}
+
+fn is_snake(s: &str) -> bool {
+    !s.is_empty()
+        && s.chars()
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
+}
+
+#[test]
+fn every_test_a_proof_names_exists() {
+    let files = sources();
+    let texts: Vec<(PathBuf, String)> = files
+        .iter()
+        .map(|p| (p.clone(), fs::read_to_string(p).unwrap_or_default()))
+        .collect();
+    let defines = |name: &str| {
+        let stems = files
+            .iter()
+            .any(|p| p.file_stem().and_then(|s| s.to_str()) == Some(name));
+        stems
+            || texts.iter().any(|(_, t)| {
+                t.contains(&format!("fn {name}("))
+                    || t.contains(&format!("fn {name}<"))
+                    || t.contains(&format!("mod {name}"))
+            })
+    };
+    let mut checked = BTreeSet::new();
+    let mut missing = Vec::new();
+    let mut proofs: Vec<PathBuf> = fs::read_dir(root().join("proofs"))
+        .expect("proofs/")
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| p.extension().is_some_and(|e| e == "md"))
+        .collect();
+    proofs.sort();
+    for proof in &proofs {
+        let text = fs::read_to_string(proof).expect("readable");
+        let name = proof.file_name().and_then(|n| n.to_str()).unwrap_or("?");
+        for (k, token) in text.split('`').enumerate() {
+            if k % 2 == 0 || token.contains(' ') || token.is_empty() {
+                continue; // outside backticks, or a formula
+            }
+            for item in expand(token) {
+                let item = item.trim_end_matches("()").to_owned();
+                let (file, rest) = match item.find(".rs") {
+                    Some(i) => (Some(&item[..i + 3]), item[i + 3..].trim_start_matches("::")),
+                    None => (None, item.as_str()),
+                };
+                if let Some(file) = file {
+                    if !(file.starts_with("tests/")
+                        || file.starts_with("src/")
+                        || file.starts_with("fuzz/")
+                        || file.starts_with("examples/"))
+                    {
+                        continue;
+                    }
+                    checked.insert(item.clone());
+                    let path = root().join(file);
+                    let Ok(body) = fs::read_to_string(&path) else {
+                        missing.push(format!("{name}: `{item}`: no file {file}"));
+                        continue;
+                    };
+                    let last = rest.rsplit("::").next().unwrap_or("");
+                    if is_snake(last)
+                        && last != "tests"
+                        && !body.contains(&format!("fn {last}("))
+                        && !body.contains(&format!("fn {last}<"))
+                    {
+                        missing.push(format!("{name}: `{item}`: no fn {last} in {file}"));
+                    }
+                    continue;
+                }
+                let segments: Vec<&str> = rest.split("::").collect();
+                let last = *segments.last().unwrap_or(&"");
+                let words = last.split('_').count();
+                let path_like = segments.len() > 1 && segments.iter().all(|s| is_snake(s));
+                if !(path_like || (is_snake(last) && words >= 4)) {
+                    continue;
+                }
+                checked.insert(item.clone());
+                if !defines(last) {
+                    missing.push(format!("{name}: `{item}`: nothing named {last}"));
+                }
+            }
+        }
+    }
+    println!(
+        "{} names checked in {} proof files",
+        checked.len(),
+        proofs.len()
+    );
+    assert!(
+        checked.len() > 40,
+        "the reader found too few names ({}): it has no power",
+        checked.len()
+    );
+    assert!(
+        missing.is_empty(),
+        "proofs name tests that do not exist:\n{}",
+        missing.join("\n")
+    );
+}
+
+#[test]
+fn braces_expand_to_every_alternative() {
+    assert_eq!(
+        expand("t_{f32,f64}_{a,b}"),
+        ["t_f32_a", "t_f32_b", "t_f64_a", "t_f64_b"]
+    );
+    assert_eq!(expand("plain"), ["plain"]);
+}
