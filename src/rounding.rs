@@ -160,7 +160,7 @@ pub(crate) fn lever_up<T: Float>(r_hat: T, c_hat: T) -> T {
     if c_hat == T::ZERO {
         r_hat
     } else {
-        (r_hat + c_hat) * (T::ONE + gamma::<T>(2))
+        sum_up(r_hat, c_hat)
     }
 }
 
@@ -399,6 +399,173 @@ pub(crate) fn diff_down<T: Float>(end: T, t: T) -> T {
         hi.next_down()
     } else {
         hi
+    }
+}
+
+/// Section "Ball": an upper bound of the exact sum `a + b` of two
+/// non-negative values, `fl(fl(a + b)(1 + gamma_2))`
+/// (`(1 - u)^2 (1 + 3u) >= 1`): one addition more than an analysis budgets.
+#[inline]
+#[must_use]
+pub(crate) fn sum_up<T: Float>(a: T, b: T) -> T {
+    (a + b) * (T::ONE + gamma::<T>(2))
+}
+
+/// Section "Pose": `P >= |x0| + |v| |t|` for the rotation centre's
+/// position at `t`, from the 1-norms (which dominate the 2-norms):
+/// `fl((|x0|_1 + |v|_1 |t|)(1 + gamma_4))` covers the three roundings.
+#[inline]
+#[must_use]
+pub(crate) fn centre_reach_up<T: Float>(x0_l1: T, v_l1: T, t: T) -> T {
+    (x0_l1 + v_l1 * t.abs()) * (T::ONE + gamma::<T>(4))
+}
+
+/// Section "Gap": the reach of every placed point, `|x(t)| + R` plus the
+/// placement error `err`: `fl(fl(P + R)(1 + gamma_2)) + err`, then the last
+/// addition's rounding is covered by `err`'s own `1 + gamma_8`.
+#[inline]
+#[must_use]
+pub(crate) fn placed_reach_up<T: Float>(centre_reach: T, lever: T, err: T) -> T {
+    sum_up(centre_reach, lever) + err
+}
+
+/// `proofs/09-ca-toi.md`, Lemma 9.2: the crude, direction-free bound of the
+/// speed of every point within `lever` of the rotation centre,
+/// `|v| + |w| lever <= |v|_1 + |w|_1 lever`, rounded up (at most five
+/// roundings, covered by `1 + gamma_8`).
+#[cfg(feature = "alloc")]
+#[inline]
+#[must_use]
+pub(crate) fn crude_speed_up<T: Float>(v_l1: T, w_l1: T, lever: T) -> T {
+    (v_l1 + w_l1 * lever) * (T::ONE + gamma::<T>(8))
+}
+
+/// Section "Oriented box": the residual radius of a fitted box,
+/// `rho = fl((radius_up(max |r^|^2) + gamma_6 fl(sum_j m_j) + 16 eta)(1 + gamma_2))`,
+/// then times `1 + gamma_7` for the length of the computed direction the
+/// support is taken along (`|n| <= 1 + gamma_5`).
+#[cfg(feature = "alloc")]
+#[inline]
+#[must_use]
+pub(crate) fn box_residual_up<T: Float>(max_sq: T, max_mag: T) -> T {
+    let rho = (radius_up(max_sq) + gamma::<T>(6) * max_mag + T::from_u32(16) * T::ETA)
+        * (T::ONE + gamma::<T>(2));
+    rho * (T::ONE + gamma::<T>(7))
+}
+
+/// Section "Oriented box": the error weight `2 |h|_1` of a box's support
+/// bound, rounded up.
+#[cfg(feature = "alloc")]
+#[inline]
+#[must_use]
+pub(crate) fn box_weight_up<T: Float>(half_sum: T) -> T {
+    T::TWO * half_sum * (T::ONE + gamma::<T>(2))
+}
+
+/// Section "Oriented box": an upper bound of `|c| + sum_k h_k |u_k| + rho`
+/// from the rounded-up `|c|` and the rounded-up sum of the other terms
+/// (`1 + gamma_6` covers the additions).
+#[cfg(feature = "alloc")]
+#[inline]
+#[must_use]
+pub(crate) fn box_reach_up<T: Float>(centre_up: T, extent_up: T) -> T {
+    (centre_up + extent_up) * (T::ONE + gamma::<T>(6))
+}
+
+/// Section "GJK": `rho >= max_i |r_i|_1` from the computed 1-norms
+/// (`fl(|r|_1)` may fall short by `gamma_2 |r|_1`).
+#[inline]
+#[must_use]
+pub(crate) fn polytope_radius_up<T: Float>(max_l1: T) -> T {
+    max_l1 * (T::ONE + gamma::<T>(3))
+}
+
+/// Section "GJK": the support slack of a placed polytope,
+/// `4 gamma_4 (6 m rho + x)(1 + gamma_8) + 64 eta (1 + m)(1 + rho)`, with `m`
+/// the largest `|R_kl|`, `rho` the vertices' largest 1-norm and `x` the
+/// translation's largest component.
+#[inline]
+#[must_use]
+pub(crate) fn polytope_support_slack<T: Float>(m: T, rho: T, x: T) -> T {
+    let six = T::from_u32(6);
+    T::from_u32(4) * gamma::<T>(4) * (six * m * rho + x) * (T::ONE + gamma::<T>(8))
+        + T::from_u32(64) * T::ETA * (T::ONE + m) * (T::ONE + rho)
+}
+
+/// Section "GJK": a certified lower bound of the separation
+/// `min (b - a) . n` of two support maps along a computed unit `n` from the
+/// computed difference `delta = fl(beta - alpha)` of their supports' dot
+/// products, the dot products' magnitudes `mags = sum |s_k n_k|` (both
+/// supports) and the maps' own slacks: `delta - M` with
+/// `M = fl((u |delta| + gamma_3 mags + slack (1 + gamma_4))(1 + gamma_4)) + 8 eta`,
+/// rounded down by `1 - gamma_8` (the subtraction and the division by
+/// `|n| <= 1 + gamma_6`); `0` when not positive.
+#[inline]
+#[must_use]
+pub(crate) fn separation_down<T: Float>(delta: T, mags: T, slacks: T) -> T {
+    let slack = slacks * (T::ONE + gamma::<T>(4));
+    let m = (T::UNIT_ROUNDOFF * delta.abs() + gamma::<T>(3) * mags + slack)
+        * (T::ONE + gamma::<T>(4))
+        + T::from_u32(8) * T::ETA;
+    let sep = delta - m;
+    if sep > T::ZERO {
+        sep * (T::ONE - gamma::<T>(8))
+    } else {
+        T::ZERO
+    }
+}
+
+/// Section "Meeting": the largest distance a triangle pair that meets may
+/// be snapped from, `2^10 u s` with `s` the largest coordinate magnitude.
+#[inline]
+#[must_use]
+pub(crate) fn snap_tolerance<T: Float>(scale: T) -> T {
+    T::from_u32(1024) * T::UNIT_ROUNDOFF * scale
+}
+
+/// Section "Meeting": the rounding of a slab width `min_B q . n - max_A p . n`
+/// over points within `s` (largest coordinate) along a computed `n`:
+/// `16 u s |n|_1` (each dot product errs by `gamma_3 s |n|_1`).
+#[inline]
+#[must_use]
+pub(crate) fn slab_rounding<T: Float>(scale: T, n_l1: T) -> T {
+    T::from_u32(16) * T::UNIT_ROUNDOFF * scale * n_l1
+}
+
+/// Section "Meeting" (Lemma FP-M): Shewchuk's a-priori bound of the 3D
+/// orientation determinant's error, `errboundA = (7 + 56 u) u` times the
+/// permanent, plus `8 eta (1 + |a_z| + |b_z| + |c_z|)` for products that
+/// underflow (Shewchuk 1997, section 4.2, his `epsilon` our `u`).
+#[inline]
+#[must_use]
+pub(crate) fn orient3d_error<T: Float>(permanent: T, z_sum: T) -> T {
+    let u = T::UNIT_ROUNDOFF;
+    (T::from_u32(7) + T::from_u32(56) * u) * u * permanent
+        + T::from_u32(8) * T::ETA * (T::ONE + z_sum)
+}
+
+/// Section "Meeting" (Lemma FP-M): the 2D orientation's bound,
+/// `(3 + 16 u) u (|l| + |r|) + 4 eta`.
+#[inline]
+#[must_use]
+pub(crate) fn orient2d_error<T: Float>(magnitude: T) -> T {
+    let u = T::UNIT_ROUNDOFF;
+    (T::from_u32(3) + T::from_u32(16) * u) * u * magnitude + T::from_u32(4) * T::ETA
+}
+
+/// Section "Summary": `x` (a non-negative finite `f64`) converted to `T`,
+/// rounded up: the conversion rounds to nearest, so a result below `x` is
+/// moved up by `y (1 + 2u)` (at least the next float for a normal `y`) plus
+/// `eta` (for a subnormal or zero `y`).
+#[cfg(feature = "alloc")]
+#[inline]
+#[must_use]
+pub(crate) fn from_f64_up<T: Float>(x: f64) -> T {
+    let y = T::from_f64(x);
+    if y.to_f64() >= x {
+        y
+    } else {
+        y * (T::ONE + T::TWO * T::UNIT_ROUNDOFF) + T::ETA
     }
 }
 

@@ -15,7 +15,7 @@ use motion_bound::testkit::ground_truth::{first_sampled_contact, place, MeshRef}
 use motion_bound::testkit::toi::{fly_by, reach, Rng};
 use motion_bound::{BallTree, Isometry, RigidMotion, Rotation, TriMesh, Vec3};
 
-const SAMPLES: usize = 128;
+const SAMPLES: usize = 96;
 
 /// A uniformly random unit quaternion (Shoemake).
 fn random_rotation(rng: &mut Rng) -> Rotation<f64> {

@@ -4,8 +4,8 @@
 use crate::bound::projection::{nevq_rate_from, nevq_speed_from, Projection};
 use crate::bound::scan::{arc_scan, arc_signed_scan, full_turn_scan};
 use crate::rounding::{
-    assemble, evq_rotational_up, gamma, lever_up, nevq_rotational_up, one_sided_decision_slack,
-    one_sided_up,
+    assemble, evq_rotational_up, lever_up, nevq_rotational_up, one_sided_decision_slack,
+    one_sided_up, sum_up,
 };
 use crate::{
     BodySummary, BoundKind, BoundingBall, Direction, Float, PreparedMotion, SweptArc, Vec3,
@@ -122,7 +122,7 @@ impl<T: Float> DirectedProbe<T> {
         if self.frame_margin == T::ZERO {
             rot
         } else {
-            (rot + self.frame_margin * lever) * (T::ONE + gamma::<T>(2))
+            sum_up(rot, self.frame_margin * lever)
         }
     }
 
@@ -183,7 +183,7 @@ impl<T: Float> DirectedProbe<T> {
         let rim = nevq_rotational_up(self.p.c_norm, self.p.w_l1, ball.radius());
         // One more addition and one more product than "Assembly" budgets:
         // `proofs/floating-point.md`, section "Ball".
-        let rot = (centre + rim) * (T::ONE + gamma::<T>(2));
+        let rot = sum_up(centre, rim);
         let rot = self.with_frame_margin(rot, lever + ball.radius());
         assemble(linear, rot).min_nan(nevq)
     }

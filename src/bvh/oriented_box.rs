@@ -1,7 +1,7 @@
 //! Certified oriented boxes: the tight bounding volume of a node's gap.
 
 use super::eigen::principal_axes;
-use crate::rounding::{gamma, radius_up, BoxError};
+use crate::rounding::{box_reach_up, box_residual_up, box_weight_up, radius_up, BoxError};
 use crate::{Float, Vec3};
 
 /// An oriented box in the body frame, in generator form:
@@ -98,12 +98,10 @@ impl<T: Float> OrientedBox<T> {
                 + y[2].abs() * u[2].norm_l1();
             max_mag = max_mag.max_nan(mag);
         }
-        let rho = (radius_up(max_sq) + gamma::<T>(6) * max_mag + T::from_u32(16) * T::ETA)
-            * (T::ONE + gamma::<T>(2));
         // The support is taken along a computed direction of length up to
         // 1 + gamma_5: the residual's part grows with it.
-        let rho = rho * (T::ONE + gamma::<T>(7));
-        let error_weight = T::TWO * (half[0] + half[1] + half[2]) * (T::ONE + gamma::<T>(2));
+        let rho = box_residual_up(max_sq, max_mag);
+        let error_weight = box_weight_up(half[0] + half[1] + half[2]);
         Self {
             centre: centre.to_array(),
             axes,
@@ -144,7 +142,7 @@ impl<T: Float> OrientedBox<T> {
             ext += self.half[k] * radius_up(u.length_squared());
         }
         sq = radius_up(sq);
-        (sq + ext) * (T::ONE + gamma::<T>(6))
+        box_reach_up(sq, ext)
     }
 }
 

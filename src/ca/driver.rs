@@ -1,7 +1,9 @@
 //! The conservative-advancement loop.
 
 use crate::ca::{CaError, CaOutcome, CaParams, CaReport, Contact, ContactCriterion, Witness};
-use crate::rounding::{advance_down, diff_down, gamma, lever_up, pose_error_up, sum_reaches};
+use crate::rounding::{
+    advance_down, centre_reach_up, diff_down, lever_up, placed_reach_up, pose_error_up, sum_reaches,
+};
 use crate::{Direction, Float, PreparedMotion, RigidMotion};
 
 /// What a geometry reports at one time of a conservative-advancement query.
@@ -186,8 +188,11 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
 /// the rotation centre in the body frame).
 #[must_use]
 pub fn placement_error<T: Float>(motion: &RigidMotion<T>, t: T, radius: T) -> (T, T) {
-    let centre_reach = (motion.centre().to_vec3().norm_l1() + motion.linear().norm_l1() * t.abs())
-        * (T::ONE + gamma::<T>(4));
+    let centre_reach = centre_reach_up(
+        motion.centre().to_vec3().norm_l1(),
+        motion.linear().norm_l1(),
+        t,
+    );
     let lever = lever_up(radius, motion.local_reach());
     let err = pose_error_up(
         motion.angle_at(t),
@@ -195,7 +200,7 @@ pub fn placement_error<T: Float>(motion: &RigidMotion<T>, t: T, radius: T) -> (T
         centre_reach + motion.local_reach(),
         !motion.orientation().is_identity(),
     );
-    (err, (centre_reach + lever) * (T::ONE + gamma::<T>(2)) + err)
+    (err, placed_reach_up(centre_reach, lever, err))
 }
 
 /// A certified safe step from a computed gap along a direction: `gap` is

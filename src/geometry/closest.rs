@@ -243,7 +243,7 @@ pub fn triangle_triangle<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3]) -> Closes
         .iter()
         .chain(b.iter())
         .fold(T::ZERO, |m, p| m.max_nan(p.max_abs()));
-    let tol = T::from_u32(1024) * T::UNIT_ROUNDOFF * m;
+    let tol = crate::rounding::snap_tolerance(m);
     if best.d2 > T::ZERO
         && best.d2 <= tol * tol
         && !certainly_apart(&a, &b, y - x, m)
@@ -303,7 +303,7 @@ fn certainly_apart<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3], closest: Vec3<T
 fn slab_separates<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3], n: Vec3<T>, m: T) -> bool {
     let lo_b = b[0].dot(n).min_nan(b[1].dot(n)).min_nan(b[2].dot(n));
     let hi_a = a[0].dot(n).max_nan(a[1].dot(n)).max_nan(a[2].dot(n));
-    let err = T::from_u32(16) * T::UNIT_ROUNDOFF * m * n.norm_l1();
+    let err = crate::rounding::slab_rounding(m, n.norm_l1());
     lo_b - hi_a > err
 }
 

@@ -14,7 +14,7 @@
 //! [doi:10.1080/10867651.1999.10487502](https://doi.org/10.1080/10867651.1999.10487502)).
 
 use crate::error::{check_components, InputError, Quantity};
-use crate::rounding::gamma;
+use crate::rounding::{polytope_radius_up, polytope_support_slack, separation_down};
 use crate::{Float, Pose, Vec3};
 
 use super::simplex::nearest;
@@ -129,7 +129,7 @@ impl<'a, T: Float> ConvexPolytope<'a, T> {
             rho = rho.max_nan(Vec3::from_array(*r).norm_l1());
         }
         // `fl(|r|_1)` may be below `|r|_1` by `gamma_2 |r|_1`.
-        let rho = rho * (T::ONE + gamma::<T>(3));
+        let rho = polytope_radius_up(rho);
         Self::placed(vertices, rho, pose)
     }
 
@@ -150,9 +150,7 @@ impl<'a, T: Float> ConvexPolytope<'a, T> {
         check_components(pose.translation.to_array(), Quantity::Pose)?;
         let m = pose.rotation_max_abs();
         let x = pose.translation.max_abs();
-        let six = T::from_u32(6);
-        let slack = T::from_u32(4) * gamma::<T>(4) * (six * m * rho + x) * (T::ONE + gamma::<T>(8))
-            + T::from_u32(64) * T::ETA * (T::ONE + m) * (T::ONE + rho);
+        let slack = polytope_support_slack(m, rho, x);
         Ok(Self {
             vertices,
             pose,
@@ -529,17 +527,11 @@ where
     let alpha = sa.dot(n);
     let beta = sb.dot(n);
     let delta = beta - alpha;
-    let slack = (a.support_slack() + b.support_slack()) * (T::ONE + gamma::<T>(4));
-    let m =
-        (T::UNIT_ROUNDOFF * delta.abs() + gamma::<T>(3) * (sa.dot_abs(n) + sb.dot_abs(n)) + slack)
-            * (T::ONE + gamma::<T>(4))
-            + T::from_u32(8) * T::ETA;
-    let sep = delta - m;
-    if sep > T::ZERO {
-        sep * (T::ONE - gamma::<T>(8))
-    } else {
-        T::ZERO
-    }
+    separation_down(
+        delta,
+        sa.dot_abs(n) + sb.dot_abs(n),
+        a.support_slack() + b.support_slack(),
+    )
 }
 
 #[cfg(test)]

@@ -134,10 +134,8 @@ fn orient3d_filtered<T: Float>(a: Vec3<T>, b: Vec3<T>, c: Vec3<T>, d: Vec3<T>) -
     let permanent = (bdxcdy.abs() + cdxbdy.abs()) * ad.z.abs()
         + (cdxady.abs() + adxcdy.abs()) * bd.z.abs()
         + (adxbdy.abs() + bdxady.abs()) * cd.z.abs();
-    let u = T::UNIT_ROUNDOFF;
-    let bound_a = (T::from_u32(7) + T::from_u32(56) * u) * u;
-    let underflow = T::from_u32(8) * T::ETA * (T::ONE + ad.z.abs() + bd.z.abs() + cd.z.abs());
-    filtered(det, bound_a * permanent + underflow)
+    let z_sum = ad.z.abs() + bd.z.abs() + cd.z.abs();
+    filtered(det, crate::rounding::orient3d_error(permanent, z_sum))
 }
 
 /// `orient2d(a, b, c)`: positive when `a, b, c` turn counterclockwise.
@@ -166,12 +164,7 @@ fn orient2d_filtered<T: Float>(a: [T; 2], b: [T; 2], c: [T; 2]) -> Orientation<T
     let bcy = b[1] - c[1];
     let l = acx * bcy;
     let r = acy * bcx;
-    let u = T::UNIT_ROUNDOFF;
-    let bound_a = (T::from_u32(3) + T::from_u32(16) * u) * u;
-    filtered(
-        l - r,
-        bound_a * (l.abs() + r.abs()) + T::from_u32(4) * T::ETA,
-    )
+    filtered(l - r, crate::rounding::orient2d_error(l.abs() + r.abs()))
 }
 
 /// The projection of `p` onto the coordinate plane orthogonal to axis

@@ -62,14 +62,7 @@ fn check_vertices<T: Float>(vertices: &[[T; 3]]) -> Result<(), MeshError> {
 
 /// `x` converted to `T`, rounded up (never below `x`). `x >= 0` finite.
 fn f64_up<T: Float>(x: f64) -> T {
-    let y = T::from_f64(x);
-    if y.to_f64() >= x {
-        y
-    } else {
-        // y > 0 normal: y (1 + 2u) is at least the next float up; ETA covers
-        // y subnormal or zero.
-        y * (T::ONE + T::TWO * T::UNIT_ROUNDOFF) + T::ETA
-    }
+    crate::rounding::from_f64_up(x)
 }
 
 impl<T: Float> TriMesh<T> {

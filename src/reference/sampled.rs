@@ -7,8 +7,9 @@
 //! S = a 1 + V D,     V = [r_i^T] (N x 3),     D = [R(t_j)^T c] (3 x T),
 //! ```
 //!
-//! because `p_i'(t) . n = v . n + c . R(t) r_i = a + (R(t)^T c) . r_i`. One
-//! dense product gives every speed at once.
+//! because `p_i'(t) . n = v . n + c . R(t) r_i = a + (R(t)^T c) . r_i`, with
+//! `r_i` the lever arm `Q0 (r_i - c)` at the epoch. One dense product gives
+//! every speed at once.
 
 extern crate std;
 use std::vec::Vec;
@@ -79,7 +80,29 @@ pub fn sample_speeds<T: Float>(
         let (s, co) = (th.sin(), th.cos());
         c[row] * co + kxc[row] * s + k[row] * kc * (1.0 - co)
     });
-    let vm = Mat::from_fn(vertices.len(), 3, |i, col| vertices[i][col].to_f64());
+    // V = [(Q0 (r_i - c))^T]: the lever arms at the epoch, with the start
+    // orientation's quaternion normalised here.
+    let [q0, q1, q2, q3] = motion.orientation().quaternion().map(Float::to_f64);
+    let ql = (q0 * q0 + q1 * q1 + q2 * q2 + q3 * q3).sqrt();
+    let (qw, qv) = (q0 / ql, [q1 / ql, q2 / ql, q3 / ql]);
+    let cross = |a: [f64; 3], b: [f64; 3]| {
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
+    };
+    let centre = wide(motion.local_centre().to_array());
+    let arms: Vec<[f64; 3]> = vertices
+        .iter()
+        .map(|r| {
+            let d = [0, 1, 2].map(|k| r[k].to_f64() - centre[k]);
+            let c1 = cross(qv, d);
+            let c2 = cross(qv, c1);
+            [0, 1, 2].map(|k| d[k] + 2.0 * qw * c1[k] + 2.0 * c2[k])
+        })
+        .collect();
+    let vm = Mat::from_fn(vertices.len(), 3, |i, col| arms[i][col]);
     let mut speeds = &vm * &d;
     for j in 0..samples {
         for i in 0..vertices.len() {

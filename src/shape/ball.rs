@@ -1,7 +1,7 @@
 //! Bounding balls of body parts, relative to the rotation centre.
 
 use crate::error::{check_components, InputError, Quantity};
-use crate::rounding::{gamma, radius_up};
+use crate::rounding::radius_up;
 use crate::Float;
 
 /// A ball of centre `s` (an offset from the rotation centre at the epoch)
@@ -42,7 +42,7 @@ impl<T: Float> BoundingBall<T> {
         let [x, y, z] = centre;
         let centre_norm_up = radius_up(x * x + y * y + z * z);
         // fl(fl(a + b)(1 + gamma_2)) >= (a + b)(1 - u)^2 (1 + 3u) >= a + b.
-        let outer_up = (centre_norm_up + radius) * (T::ONE + gamma::<T>(2));
+        let outer_up = crate::rounding::sum_up(centre_norm_up, radius);
         Ok(Self {
             centre,
             radius,

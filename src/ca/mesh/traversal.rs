@@ -8,7 +8,7 @@ use crate::bvh::{BallTree, Leaf};
 use crate::ca::driver::gap_step;
 use crate::ca::{StepResult, Witness};
 use crate::geometry::closest::triangle_triangle;
-use crate::rounding::{gamma, gap_down, lever_up, step_down, BoxError};
+use crate::rounding::{crude_speed_up, gap_down, lever_up, step_down, BoxError};
 use crate::{BoundKind, BoundingBall, Direction, Float, Point3, Pose, PreparedMotion, Vec3};
 
 /// What one body contributes at the current time.
@@ -53,7 +53,7 @@ impl<T: Float> Placed<'_, T> {
     /// its directed bounds are computed.
     #[inline]
     fn crude_speed(&self, radius: T) -> T {
-        (self.v_l1 + self.w_l1 * lever_up(radius, self.lever_extra)) * (T::ONE + gamma::<T>(8))
+        crude_speed_up(self.v_l1, self.w_l1, lever_up(radius, self.lever_extra))
     }
 
     fn centre(&self, tree: &BallTree<T>, node: u32) -> Vec3<T> {
