@@ -23,7 +23,7 @@ use motion_bound::reference::DoubleDouble;
 use motion_bound::testkit::triangles_intersect_exact;
 use motion_bound::{
     gjk_distance, point_triangle, rotate_about_axis, segment_segment, triangle_triangle,
-    ConvexPolytope, Float, GjkParams, Pose, Vec3,
+    ConvexPolytope, Float, GjkParams, Point3, Pose, Vec3,
 };
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
@@ -44,11 +44,11 @@ fn round_to<T: Float>(t: &Tri) -> Tri {
     t.map(|p| p.map(|x| T::from_f64(x).to_f64()))
 }
 
-fn to_t<T: Float>(t: &Tri) -> [Vec3<T>; 3] {
-    t.map(|p| Vec3::new(T::from_f64(p[0]), T::from_f64(p[1]), T::from_f64(p[2])))
+fn to_t<T: Float>(t: &Tri) -> [Point3<T>; 3] {
+    t.map(|p| Point3::new(T::from_f64(p[0]), T::from_f64(p[1]), T::from_f64(p[2])))
 }
 
-fn f64_of<T: Float>(v: Vec3<T>) -> [f64; 3] {
+fn f64_of<T: Float>(v: Point3<T>) -> [f64; 3] {
     [v.x.to_f64(), v.y.to_f64(), v.z.to_f64()]
 }
 
@@ -594,7 +594,7 @@ fn brute_force(a: &[[f64; 3]], b: &[[f64; 3]]) -> f64 {
         for i in 0..v.len() {
             for j in i..v.len() {
                 for k in j..v.len() {
-                    t.push([v[i], v[j], v[k]].map(Vec3::from_array));
+                    t.push([v[i], v[j], v[k]].map(Point3::from_array));
                 }
             }
         }
@@ -711,7 +711,7 @@ fn check_gjk<T: Float>(
     // The certified directional separation, checked in double-double from
     // the exact pose map: (b - a) . n >= lower_bound for all vertices.
     if let Some(n) = r.direction {
-        let n = f64_of(n);
+        let n = n.get().to_array().map(Float::to_f64);
         let max_a = va
             .iter()
             .map(|&p| placed_dot_dd(&pa, p, n))
@@ -771,10 +771,10 @@ fn nearly_parallel_segments_keep_their_distance() {
     for k in 4..15 {
         let e = 10f64.powi(-k);
         let c = segment_segment(
-            Vec3::new(0.0, 0.0, 0.0),
-            Vec3::new(1.0, 0.0, 0.0),
-            Vec3::new(0.2, 1.0, 0.0),
-            Vec3::new(0.8, 1.0, e),
+            Point3::new(0.0, 0.0, 0.0),
+            Point3::new(1.0, 0.0, 0.0),
+            Point3::new(0.2, 1.0, 0.0),
+            Point3::new(0.8, 1.0, e),
         );
         assert!(
             (c.distance - 1.0).abs() < 1e-14,
@@ -789,14 +789,14 @@ fn a_thin_needle_through_a_triangle_meets_it() {
     // A shallow crossing: the needle's crossing point is ill-conditioned,
     // but its distance is not.
     let a = [
-        Vec3::new(0.0f64, 0.0, 0.0),
-        Vec3::new(1.0, 0.0, 0.0),
-        Vec3::new(0.0, 1.0, 0.0),
+        Point3::new(0.0f64, 0.0, 0.0),
+        Point3::new(1.0, 0.0, 0.0),
+        Point3::new(0.0, 1.0, 0.0),
     ];
     let b = [
-        Vec3::new(-1.0, 0.2, -1e-9),
-        Vec3::new(2.0, 0.2, 2e-9),
-        Vec3::new(2.0, 0.2 + 1e-12, 2e-9),
+        Point3::new(-1.0, 0.2, -1e-9),
+        Point3::new(2.0, 0.2, 2e-9),
+        Point3::new(2.0, 0.2 + 1e-12, 2e-9),
     ];
     let c = triangle_triangle(&a, &b);
     assert_eq!(c.distance, 0.0, "meets: {c:?}");

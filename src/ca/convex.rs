@@ -192,8 +192,8 @@ impl<T: Float> Proximity<T> for GjkProximity<'_, T> {
         }
         Some(Witness {
             distance: r.distance,
-            on_a: Point3::from_vec3(r.on_a),
-            on_b: Point3::from_vec3(r.on_b),
+            on_a: r.on_a,
+            on_b: r.on_b,
         })
     }
 }

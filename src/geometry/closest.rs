@@ -16,7 +16,7 @@
 use super::intersect::triangles_meet;
 use super::predicates::points_in_exact_range;
 use super::scale::Scale;
-use crate::{Float, Vec3};
+use crate::{Float, Point3, Vec3};
 
 /// The closest points of two sets and their distance.
 ///
@@ -36,12 +36,32 @@ pub struct ClosestPoints<T> {
     /// The Euclidean distance between the sets, `|on_b - on_a|`.
     pub distance: T,
     /// The witness point on the first set.
-    pub on_a: Vec3<T>,
+    pub on_a: Point3<T>,
     /// The witness point on the second set.
-    pub on_b: Vec3<T>,
+    pub on_b: Point3<T>,
 }
 
-impl<T: Float> ClosestPoints<T> {
+/// [`ClosestPoints`] with the witnesses as the vectors the crate computes
+/// with (what the mesh stepper uses; the public functions convert).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Closest<T> {
+    pub(crate) distance: T,
+    pub(crate) on_a: Vec3<T>,
+    pub(crate) on_b: Vec3<T>,
+}
+
+impl<T: Float> From<Closest<T>> for ClosestPoints<T> {
+    #[inline]
+    fn from(c: Closest<T>) -> Self {
+        Self {
+            distance: c.distance,
+            on_a: Point3::from_vec3(c.on_a),
+            on_b: Point3::from_vec3(c.on_b),
+        }
+    }
+}
+
+impl<T: Float> Closest<T> {
     /// The answer for input with a NaN or infinite coordinate: a NaN
     /// distance, witnesses the first point of each set.
     fn non_finite(on_a: Vec3<T>, on_b: Vec3<T>) -> Self {
@@ -86,35 +106,45 @@ impl<T: Float> ClosestPoints<T> {
 /// normal equations.
 ///
 /// ```
-/// use motion_bound::{segment_segment, Vec3};
+/// use motion_bound::{segment_segment, Point3};
 /// // Two skew segments one unit apart.
 /// let c = segment_segment(
-///     Vec3::new(-1.0, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0),
-///     Vec3::new(0.0, -1.0, 1.0), Vec3::new(0.0, 1.0, 1.0),
+///     Point3::new(-1.0, 0.0, 0.0), Point3::new(1.0, 0.0, 0.0),
+///     Point3::new(0.0, -1.0, 1.0), Point3::new(0.0, 1.0, 1.0),
 /// );
 /// assert_eq!(c.distance, 1.0);
-/// assert_eq!(c.on_a, Vec3::new(0.0, 0.0, 0.0));
-/// assert_eq!(c.on_b, Vec3::new(0.0, 0.0, 1.0));
+/// assert_eq!(c.on_a, Point3::new(0.0, 0.0, 0.0));
+/// assert_eq!(c.on_b, Point3::new(0.0, 0.0, 1.0));
 /// // Overlapping parallel segments: any pair across the overlap is closest.
 /// let c = segment_segment(
-///     Vec3::new(0.0, 0.0, 0.0), Vec3::new(2.0, 0.0, 0.0),
-///     Vec3::new(1.0, 3.0, 0.0), Vec3::new(5.0, 3.0, 0.0),
+///     Point3::new(0.0, 0.0, 0.0), Point3::new(2.0, 0.0, 0.0),
+///     Point3::new(1.0, 3.0, 0.0), Point3::new(5.0, 3.0, 0.0),
 /// );
 /// assert_eq!(c.distance, 3.0);
 /// ```
 #[must_use]
 pub fn segment_segment<T: Float>(
+    p0: Point3<T>,
+    p1: Point3<T>,
+    q0: Point3<T>,
+    q1: Point3<T>,
+) -> ClosestPoints<T> {
+    segment_segment_vec(p0.to_vec3(), p1.to_vec3(), q0.to_vec3(), q1.to_vec3()).into()
+}
+
+/// [`segment_segment`] on the crate's vectors.
+pub(crate) fn segment_segment_vec<T: Float>(
     p0: Vec3<T>,
     p1: Vec3<T>,
     q0: Vec3<T>,
     q1: Vec3<T>,
-) -> ClosestPoints<T> {
+) -> Closest<T> {
     if ![p0, p1, q0, q1].iter().all(|p| p.is_finite()) {
-        return ClosestPoints::non_finite(p0, q0);
+        return Closest::non_finite(p0, q0);
     }
     let s = Scale::for_points(&[p0, p1, q0, q1]);
     let (x, y) = seg_seg(s.apply(p0), s.apply(p1), s.apply(q0), s.apply(q1));
-    ClosestPoints::from_scaled(&s, x, y)
+    Closest::from_scaled(&s, x, y)
 }
 
 /// The closest point to `p` on the (solid) triangle `[a, b, c]`.
@@ -130,26 +160,31 @@ pub fn segment_segment<T: Float>(
 /// `on_a` is `p` itself, `on_b` the point on the triangle.
 ///
 /// ```
-/// use motion_bound::{point_triangle, Vec3};
-/// let tri = [Vec3::new(0.0, 0.0, 0.0), Vec3::new(2.0, 0.0, 0.0), Vec3::new(0.0, 2.0, 0.0)];
-/// let c = point_triangle(Vec3::new(0.5, 0.5, 3.0), tri);
-/// assert_eq!((c.distance, c.on_b), (3.0, Vec3::new(0.5, 0.5, 0.0)));
+/// use motion_bound::{point_triangle, Point3};
+/// let tri = [Point3::new(0.0, 0.0, 0.0), Point3::new(2.0, 0.0, 0.0), Point3::new(0.0, 2.0, 0.0)];
+/// let c = point_triangle(Point3::new(0.5, 0.5, 3.0), tri);
+/// assert_eq!((c.distance, c.on_b), (3.0, Point3::new(0.5, 0.5, 0.0)));
 /// // Beyond the hypotenuse: the closest point is on that edge.
-/// let c = point_triangle(Vec3::new(2.0, 2.0, 0.0), tri);
-/// assert_eq!(c.on_b, Vec3::new(1.0, 1.0, 0.0));
+/// let c = point_triangle(Point3::new(2.0, 2.0, 0.0), tri);
+/// assert_eq!(c.on_b, Point3::new(1.0, 1.0, 0.0));
 /// // A degenerate (collinear) triangle is its longest edge.
-/// let flat = [Vec3::new(0.0, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0), Vec3::new(3.0, 0.0, 0.0)];
-/// assert_eq!(point_triangle(Vec3::new(2.0, 1.0, 0.0), flat).distance, 1.0);
+/// let flat = [Point3::new(0.0, 0.0, 0.0), Point3::new(1.0, 0.0, 0.0), Point3::new(3.0, 0.0, 0.0)];
+/// assert_eq!(point_triangle(Point3::new(2.0, 1.0, 0.0), flat).distance, 1.0);
 /// ```
 #[must_use]
-pub fn point_triangle<T: Float>(p: Vec3<T>, [a, b, c]: [Vec3<T>; 3]) -> ClosestPoints<T> {
+pub fn point_triangle<T: Float>(p: Point3<T>, triangle: [Point3<T>; 3]) -> ClosestPoints<T> {
+    point_triangle_vec(p.to_vec3(), triangle.map(Point3::to_vec3)).into()
+}
+
+/// [`point_triangle`] on the crate's vectors.
+pub(crate) fn point_triangle_vec<T: Float>(p: Vec3<T>, [a, b, c]: [Vec3<T>; 3]) -> Closest<T> {
     if ![p, a, b, c].iter().all(|p| p.is_finite()) {
-        return ClosestPoints::non_finite(p, a);
+        return Closest::non_finite(p, a);
     }
     let s = Scale::for_points(&[p, a, b, c]);
     let p = s.apply(p);
     let q = closest_on_triangle(p, s.apply(a), s.apply(b), s.apply(c));
-    ClosestPoints::from_scaled(&s, p, q)
+    Closest::from_scaled(&s, p, q)
 }
 
 /// The distance between two solid triangles, with witness points.
@@ -202,8 +237,8 @@ pub fn point_triangle<T: Float>(p: Vec3<T>, [a, b, c]: [Vec3<T>; 3]) -> ClosestP
 /// correct distance. Non-finite input gives a NaN distance.
 ///
 /// ```
-/// use motion_bound::{triangle_triangle, Vec3};
-/// let t = |p: [[f64; 3]; 3]| p.map(Vec3::from_array);
+/// use motion_bound::{triangle_triangle, Point3};
+/// let t = |p: [[f64; 3]; 3]| p.map(Point3::from_array);
 /// let a = t([[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0]]);
 /// // Parallel, one unit above.
 /// let b = t([[1.0, 1.0, 1.0], [2.0, 1.0, 1.0], [1.0, 2.0, 1.0]]);
@@ -215,9 +250,15 @@ pub fn point_triangle<T: Float>(p: Vec3<T>, [a, b, c]: [Vec3<T>; 3]) -> ClosestP
 /// assert_eq!(hit.on_a, hit.on_b);
 /// ```
 #[must_use]
-pub fn triangle_triangle<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3]) -> ClosestPoints<T> {
+pub fn triangle_triangle<T: Float>(a: &[Point3<T>; 3], b: &[Point3<T>; 3]) -> ClosestPoints<T> {
+    triangle_triangle_vec(&a.map(Point3::to_vec3), &b.map(Point3::to_vec3)).into()
+}
+
+/// [`triangle_triangle`] on the crate's vectors (the mesh stepper's leaf
+/// test).
+pub(crate) fn triangle_triangle_vec<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3]) -> Closest<T> {
     if !a.iter().chain(b.iter()).all(|p| p.is_finite()) {
-        return ClosestPoints::non_finite(a[0], b[0]);
+        return Closest::non_finite(a[0], b[0]);
     }
     let s = Scale::for_points(&[a[0], a[1], a[2], b[0], b[1], b[2]]);
     let (a0, b0) = (a, b);
@@ -252,7 +293,7 @@ pub fn triangle_triangle<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3]) -> Closes
         let mid = x.lerp(y, T::HALF);
         (x, y) = (mid, mid);
     }
-    ClosestPoints::from_scaled(&s, x, y)
+    Closest::from_scaled(&s, x, y)
 }
 
 /// Whether the triangles meet (given as the caller passed them, and
@@ -456,7 +497,10 @@ fn point_over_triangle<T: Float>(p: Vec3<T>, q: Vec3<T>, t: &[Vec3<T>; 3]) -> Op
 
 #[cfg(test)]
 mod tests {
-    use super::{point_triangle, segment_segment, triangle_triangle};
+    use super::{
+        point_triangle_vec as point_triangle, segment_segment_vec as segment_segment,
+        triangle_triangle_vec as triangle_triangle,
+    };
     use crate::Vec3;
 
     fn v(x: f64, y: f64, z: f64) -> Vec3<f64> {

@@ -15,7 +15,7 @@
 
 use crate::error::{check_components, InputError, Quantity};
 use crate::rounding::{polytope_radius_up, polytope_support_slack, separation_down};
-use crate::{Float, Pose, Vec3};
+use crate::{Direction, Float, Point3, Pose, Vec3};
 
 use super::simplex::nearest;
 
@@ -35,19 +35,19 @@ use super::simplex::nearest;
 /// [`support_slack`]: SupportMap::support_slack
 ///
 /// ```
-/// use motion_bound::{gjk_distance, GjkParams, SupportMap, Vec3};
+/// use motion_bound::{gjk_distance, GjkParams, Point3, SupportMap, Vec3};
 /// /// A ball, whose support is exact enough to ignore here.
-/// struct Ball { centre: Vec3<f64>, radius: f64 }
+/// struct Ball { centre: Point3<f64>, radius: f64 }
 /// impl SupportMap<f64> for Ball {
-///     fn support(&self, dir: Vec3<f64>) -> Vec3<f64> {
+///     fn support(&self, dir: Vec3<f64>) -> Point3<f64> {
 ///         self.centre + dir.normalize_or(Vec3::ZERO) * self.radius
 ///     }
 ///     fn support_slack(&self) -> f64 {
-///         8.0 * f64::EPSILON * (self.centre.norm_l1() + self.radius)
+///         8.0 * f64::EPSILON * (self.centre.to_vec3().norm_l1() + self.radius)
 ///     }
 /// }
-/// let a = Ball { centre: Vec3::ZERO, radius: 1.0 };
-/// let b = Ball { centre: Vec3::new(3.0, 0.0, 0.0), radius: 1.0 };
+/// let a = Ball { centre: Point3::ORIGIN, radius: 1.0 };
+/// let b = Ball { centre: Point3::new(3.0, 0.0, 0.0), radius: 1.0 };
 /// // Smooth bodies converge only asymptotically: loosen the tolerance.
 /// let params = GjkParams::default().with_rel_tol(1e-6);
 /// let r = gjk_distance(&a, &b, &params);
@@ -56,7 +56,7 @@ use super::simplex::nearest;
 /// ```
 pub trait SupportMap<T: Float> {
     /// A point of the body farthest along `dir`.
-    fn support(&self, dir: Vec3<T>) -> Vec3<T>;
+    fn support(&self, dir: Vec3<T>) -> Point3<T>;
 
     /// A bound of the support's shortfall for directions of length at most
     /// 2 (see the trait documentation). Default 0: exact.
@@ -67,7 +67,7 @@ pub trait SupportMap<T: Float> {
 
 impl<T: Float, S: SupportMap<T> + ?Sized> SupportMap<T> for &S {
     #[inline]
-    fn support(&self, dir: Vec3<T>) -> Vec3<T> {
+    fn support(&self, dir: Vec3<T>) -> Point3<T> {
         (**self).support(dir)
     }
     #[inline]
@@ -97,10 +97,10 @@ impl<T: Float, S: SupportMap<T> + ?Sized> SupportMap<T> for &S {
 /// orthonormal: the identity `(R r) . d = r . (R^T d)` holds for any matrix.
 ///
 /// ```
-/// use motion_bound::{ConvexPolytope, Pose, SupportMap, Vec3};
+/// use motion_bound::{ConvexPolytope, Point3, Pose, SupportMap, Vec3};
 /// let square = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 1.0, 0.0]];
 /// let body = ConvexPolytope::try_new(&square, Pose::from_translation(Vec3::new(0.0, 0.0, 5.0)))?;
-/// assert_eq!(body.support(Vec3::new(1.0, 1.0, 0.0)), Vec3::new(1.0, 1.0, 5.0));
+/// assert_eq!(body.support(Vec3::new(1.0, 1.0, 0.0)), Point3::new(1.0, 1.0, 5.0));
 /// assert!(body.support_slack() < 1e-13);
 /// # Ok::<(), motion_bound::InputError>(())
 /// ```
@@ -175,7 +175,7 @@ impl<'a, T: Float> ConvexPolytope<'a, T> {
 }
 
 impl<T: Float> SupportMap<T> for ConvexPolytope<'_, T> {
-    fn support(&self, dir: Vec3<T>) -> Vec3<T> {
+    fn support(&self, dir: Vec3<T>) -> Point3<T> {
         let d = self.pose.inverse_transform_vector(dir);
         let mut best = Vec3::from_array(self.vertices[0]);
         let mut best_dot = best.dot(d);
@@ -187,7 +187,7 @@ impl<T: Float> SupportMap<T> for ConvexPolytope<'_, T> {
                 best_dot = s;
             }
         }
-        self.pose.transform_point(best)
+        Point3::from_vec3(self.pose.transform_point(best))
     }
 
     #[inline]
@@ -279,15 +279,15 @@ pub struct GjkResult<T> {
     /// along `direction` (see the type's documentation).
     pub lower_bound: T,
     /// The witness point on `A` (a common point when intersecting).
-    pub on_a: Vec3<T>,
+    pub on_a: Point3<T>,
     /// The witness point on `B` (equal to `on_a` when intersecting).
-    pub on_b: Vec3<T>,
+    pub on_b: Point3<T>,
     /// The unit direction from `A` towards `B` (`-v / |v|`, or its
     /// refinement orthogonal to the final simplex), or `None` when
     /// no positive separation along it can be certified (the bodies
     /// intersect or touch, are too close for a direction, or GJK stopped
     /// with a direction that does not separate them); then `lower_bound` is 0.
-    pub direction: Option<Vec3<T>>,
+    pub direction: Option<Direction<T>>,
     /// The origin was found inside (or within rounding of) `A - B`.
     pub intersecting: bool,
     /// Termination by the tolerance test, a repeated support point or an
@@ -316,7 +316,7 @@ pub struct GjkResult<T> {
 /// assert!(r.converged && !r.intersecting);
 /// assert!((r.distance - 2.0).abs() < 1e-12);
 /// assert!(r.lower_bound <= 2.0 && r.lower_bound > 2.0 - 1e-12);
-/// let n = r.direction.unwrap();
+/// let n = r.direction.unwrap().get();
 /// assert!((n.x - 1.0).abs() < 1e-12);
 ///
 /// let c = ConvexPolytope::try_new(&cube, Pose::from_translation(Vec3::new(0.5, 0.5, 0.5)))?;
@@ -337,8 +337,8 @@ where
     let mut pa = [Vec3::ZERO; 4];
     let mut pb = [Vec3::ZERO; 4];
     let mut w = [Vec3::ZERO; 4];
-    pa[0] = a.support(e0);
-    pb[0] = b.support(-e0);
+    pa[0] = a.support(e0).to_vec3();
+    pb[0] = b.support(-e0).to_vec3();
     w[0] = pa[0] - pb[0];
     let mut n = 1;
     let mut lambda = [T::ONE, zero, zero, zero];
@@ -353,7 +353,7 @@ where
     }
     while !intersecting && !vv.is_nan() && iterations < params.max_iterations {
         iterations += 1;
-        let (sa, sb) = (a.support(-v), b.support(v));
+        let (sa, sb) = (a.support(-v).to_vec3(), b.support(v).to_vec3());
         let wk = sa - sb;
         if vv - v.dot(wk) <= params.rel_tol * vv || w[..n].contains(&wk) {
             converged = true;
@@ -407,7 +407,7 @@ where
         on_b = on_b + pb[i] * lambda[i];
     }
     if intersecting {
-        let m = on_a.lerp(on_b, T::HALF);
+        let m = Point3::from_vec3(on_a.lerp(on_b, T::HALF));
         return GjkResult {
             distance: zero,
             lower_bound: zero,
@@ -456,9 +456,11 @@ where
     GjkResult {
         distance,
         lower_bound,
-        on_a,
-        on_b,
-        direction,
+        on_a: Point3::from_vec3(on_a),
+        on_b: Point3::from_vec3(on_b),
+        // A normalisation of a vector whose squared length is normal (both
+        // candidates are), within `gamma_5` of unit length.
+        direction: direction.map(Direction::from_normalized),
         intersecting,
         converged,
         iterations,
@@ -523,7 +525,7 @@ where
     A: SupportMap<T> + ?Sized,
     B: SupportMap<T> + ?Sized,
 {
-    let (sa, sb) = (a.support(n), b.support(-n));
+    let (sa, sb) = (a.support(n).to_vec3(), b.support(-n).to_vec3());
     let alpha = sa.dot(n);
     let beta = sb.dot(n);
     let delta = beta - alpha;
@@ -537,7 +539,7 @@ where
 #[cfg(test)]
 mod tests {
     use super::{gjk_distance, ConvexPolytope, GjkParams, SupportMap};
-    use crate::{InputError, Pose, Quantity, Vec3};
+    use crate::{InputError, Point3, Pose, Quantity, Vec3};
 
     #[test]
     fn rejects_bad_input() {
@@ -614,8 +616,8 @@ mod tests {
     fn nan_support_terminates() {
         struct Nan;
         impl SupportMap<f64> for Nan {
-            fn support(&self, _: Vec3<f64>) -> Vec3<f64> {
-                Vec3::new(f64::NAN, 0.0, 0.0)
+            fn support(&self, _: Vec3<f64>) -> Point3<f64> {
+                Point3::new(f64::NAN, 0.0, 0.0)
             }
         }
         let r = gjk_distance(&Nan, &Nan, &GjkParams::default());

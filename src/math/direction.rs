@@ -67,6 +67,15 @@ impl<T: Float> Direction<T> {
         }
     }
 
+    /// A vector already normalised by [`Vec3::try_normalize`] from a vector
+    /// whose squared length is a normal float: its length is within
+    /// `gamma_5` of 1, the invariant of this type (the same argument as
+    /// `try_new_fast`'s, `proofs/floating-point.md`, "Direction").
+    #[inline]
+    pub(crate) const fn from_normalized(v: Vec3<T>) -> Self {
+        Self(v)
+    }
+
     /// The direction of `v`, or `fallback` when `v` is zero or not finite.
     #[must_use]
     pub fn new_or(v: Vec3<T>, fallback: Self) -> Self {

@@ -7,7 +7,7 @@ use super::MeshPair;
 use crate::bvh::{BallTree, Leaf};
 use crate::ca::driver::gap_step;
 use crate::ca::{StepResult, Witness};
-use crate::geometry::closest::triangle_triangle;
+use crate::geometry::closest::triangle_triangle_vec;
 use crate::rounding::{crude_speed_up, gap_down, lever_up, step_down, BoxError};
 use crate::{BoundKind, BoundingBall, Direction, Float, Point3, Pose, PreparedMotion, Vec3};
 
@@ -226,7 +226,7 @@ impl<T: Float> MeshPair<'_, T> {
     ) -> Option<StepResult<T>> {
         let (la, lb) = (&self.a.leaves[i], &self.b.leaves[j]);
         self.stats.triangle_pairs += 1;
-        let cp = triangle_triangle(ta, tb);
+        let cp = triangle_triangle_vec(ta, tb);
         let w = Witness {
             distance: cp.distance,
             on_a: Point3::from_vec3(cp.on_a),
