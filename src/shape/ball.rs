@@ -20,7 +20,8 @@ pub struct BoundingBall<T> {
 }
 
 impl<T: Float> BoundingBall<T> {
-    /// The ball of centre `centre` and radius `radius`.
+    /// The ball of centre `centre` (a body point: a [`Point3`](crate::Point3)
+    /// in the body frame, or a plain `[T; 3]`) and radius `radius`.
     ///
     /// # Errors
     /// [`InputError::NonFinite`] / [`InputError::TooLarge`] with
@@ -28,12 +29,13 @@ impl<T: Float> BoundingBall<T> {
     /// [`InputError::NegativeRadius`].
     ///
     /// ```
-    /// use motion_bound::BoundingBall;
-    /// let b = BoundingBall::try_new([3.0, 4.0, 0.0], 1.0).unwrap();
+    /// use motion_bound::{BoundingBall, Point3};
+    /// let b = BoundingBall::try_new(Point3::new(3.0, 4.0, 0.0), 1.0).unwrap();
     /// assert!(b.outer_radius_up() >= 6.0 && b.outer_radius_up() < 6.0 + 1e-12);
     /// assert!(BoundingBall::try_new([0.0; 3], -1.0).is_err());
     /// ```
-    pub fn try_new(centre: [T; 3], radius: T) -> Result<Self, InputError> {
+    pub fn try_new(centre: impl Into<crate::Point3<T>>, radius: T) -> Result<Self, InputError> {
+        let centre = centre.into().to_array();
         check_components(centre, Quantity::Centre)?;
         check_components([radius, T::ZERO, T::ZERO], Quantity::Radius)?;
         if radius < T::ZERO {
