@@ -100,13 +100,14 @@ fn quaternion() -> impl Strategy<Value = [f64; 4]> {
         .prop_map(|(q, e)| q.map(|x| x * 2f64.powi(e / 4)))
 }
 
+/// The rotation of the quaternion `q` rounded to `T`, if it is nonzero.
+fn rotation<T: Float>(q: [f64; 4]) -> Option<Rotation<T>> {
+    let [w, x, y, z] = q.map(T::from_f64);
+    Rotation::try_from_quaternion(w, x, y, z).ok()
+}
+
 fn check_matrix<T: Float, R: Real>(q: [f64; 4]) -> Result<(), TestCaseError> {
-    let Ok(rot) = Rotation::<T>::try_from_quaternion(
-        T::from_f64(q[0]),
-        T::from_f64(q[1]),
-        T::from_f64(q[2]),
-        T::from_f64(q[3]),
-    ) else {
+    let Some(rot) = rotation::<T>(q) else {
         return Ok(());
     };
     let err = matrix_error::<T, R>(&rot);
@@ -145,12 +146,7 @@ fn margin_coefficient<T: Float>(w_body_l1: f64, theta_m: f64, offset: bool) -> f
 /// returns the largest `|exact - frame| / (k R)` over sampled times.
 fn frame_perturbation<T: Float, R: Real>(rng: &mut SplitMix64) -> f64 {
     let q = [0; 4].map(|_| rng.signed_unit());
-    let Ok(rot) = Rotation::<T>::try_from_quaternion(
-        T::from_f64(q[0]),
-        T::from_f64(q[1]),
-        T::from_f64(q[2]),
-        T::from_f64(q[3]),
-    ) else {
+    let Some(rot) = rotation::<T>(q) else {
         return 0.0;
     };
     let scale = 10f64.powi((rng.next_u64() % 7) as i32 - 3);

@@ -81,12 +81,7 @@ impl<T: Float> Pose<T> {
     #[inline]
     #[must_use]
     pub fn transform_vector(&self, v: Vec3<T>) -> Vec3<T> {
-        let r = &self.rotation;
-        Vec3::new(
-            Vec3::from_array(r[0]).dot(v),
-            Vec3::from_array(r[1]).dot(v),
-            Vec3::from_array(r[2]).dot(v),
-        )
+        mat_vec(&self.rotation, v)
     }
 
     /// `R^T v`: a world vector in the body frame (the inverse of
@@ -94,12 +89,7 @@ impl<T: Float> Pose<T> {
     #[inline]
     #[must_use]
     pub fn inverse_transform_vector(&self, v: Vec3<T>) -> Vec3<T> {
-        let r = &self.rotation;
-        Vec3::new(
-            Vec3::new(r[0][0], r[1][0], r[2][0]).dot(v),
-            Vec3::new(r[0][1], r[1][1], r[2][1]).dot(v),
-            Vec3::new(r[0][2], r[1][2], r[2][2]).dot(v),
-        )
+        mat_t_vec(&self.rotation, v)
     }
 
     /// The largest absolute entry of `R` (what the rounding error bounds of
@@ -123,6 +113,38 @@ impl<T: Float> Pose<T> {
             .all(|row| Vec3::from_array(*row).is_finite())
             && self.translation.is_finite()
     }
+}
+
+/// `M v` for a row-major `M`, each entry a dot product left to right (the
+/// order the error analysis assumes: three products, two sums).
+#[inline]
+pub(crate) fn mat_vec<T: Float>(m: &[[T; 3]; 3], v: Vec3<T>) -> Vec3<T> {
+    Vec3::new(
+        Vec3::from_array(m[0]).dot(v),
+        Vec3::from_array(m[1]).dot(v),
+        Vec3::from_array(m[2]).dot(v),
+    )
+}
+
+/// `M^T v` for a row-major `M`, as [`mat_vec`].
+#[inline]
+pub(crate) fn mat_t_vec<T: Float>(m: &[[T; 3]; 3], v: Vec3<T>) -> Vec3<T> {
+    Vec3::new(
+        Vec3::new(m[0][0], m[1][0], m[2][0]).dot(v),
+        Vec3::new(m[0][1], m[1][1], m[2][1]).dot(v),
+        Vec3::new(m[0][2], m[1][2], m[2][2]).dot(v),
+    )
+}
+
+/// `A B` for row-major matrices, each entry summed left to right.
+pub(crate) fn mat_mul<T: Float>(a: &[[T; 3]; 3], b: &[[T; 3]; 3]) -> [[T; 3]; 3] {
+    let mut out = [[T::ZERO; 3]; 3];
+    for (i, row) in out.iter_mut().enumerate() {
+        for (j, e) in row.iter_mut().enumerate() {
+            *e = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
+        }
+    }
+    out
 }
 
 impl<T: Float> Default for Pose<T> {

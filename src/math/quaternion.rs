@@ -4,6 +4,7 @@
 use core::ops::Mul;
 
 use crate::error::{InputError, Quantity};
+use crate::math::pose::{mat_t_vec, mat_vec};
 use crate::{Float, Vec3};
 
 /// A rotation, from a unit quaternion `q = (w, x, y, z)`: the orientation of
@@ -145,24 +146,14 @@ impl<T: Float> Rotation<T> {
     #[inline]
     #[must_use]
     pub fn rotate(&self, v: Vec3<T>) -> Vec3<T> {
-        let m = &self.m;
-        Vec3::new(
-            Vec3::from_array(m[0]).dot(v),
-            Vec3::from_array(m[1]).dot(v),
-            Vec3::from_array(m[2]).dot(v),
-        )
+        mat_vec(&self.m, v)
     }
 
     /// `M^T v`: a world vector in the body frame.
     #[inline]
     #[must_use]
     pub fn inverse_rotate(&self, v: Vec3<T>) -> Vec3<T> {
-        let m = &self.m;
-        Vec3::new(
-            Vec3::new(m[0][0], m[1][0], m[2][0]).dot(v),
-            Vec3::new(m[0][1], m[1][1], m[2][1]).dot(v),
-            Vec3::new(m[0][2], m[1][2], m[2][2]).dot(v),
-        )
+        mat_t_vec(&self.m, v)
     }
 
     /// The inverse rotation (the conjugate quaternion).

@@ -1,6 +1,7 @@
 //! Rigid motion with constant linear and angular velocity, from a start pose.
 
 use crate::error::{check_components, InputError, Quantity};
+use crate::math::pose::mat_mul;
 use crate::math::rotation::rotate_about_axis;
 use crate::{BodyPoint, Direction, Float, Isometry, Point3, Pose, Rotation, TimeInterval, Vec3};
 
@@ -487,17 +488,6 @@ fn frame_interval<T: Float>(duration: T) -> Result<TimeInterval<T>, InputError> 
         return Err(InputError::NonPositiveDuration);
     }
     TimeInterval::try_new(T::ZERO, duration)
-}
-
-/// `a b` for row-major 3x3 matrices, each entry summed left to right.
-fn mat_mul<T: Float>(a: &[[T; 3]; 3], b: &[[T; 3]; 3]) -> [[T; 3]; 3] {
-    let mut out = [[T::ZERO; 3]; 3];
-    for (i, row) in out.iter_mut().enumerate() {
-        for (j, e) in row.iter_mut().enumerate() {
-            *e = a[i][0] * b[0][j] + a[i][1] * b[1][j] + a[i][2] * b[2][j];
-        }
-    }
-    out
 }
 
 #[cfg(test)]

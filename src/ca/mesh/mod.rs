@@ -18,9 +18,8 @@ use seeds::Seeds;
 use traversal::{slab_gap, Placed, Rates};
 
 use crate::bvh::BallTree;
-use crate::ca::driver::placement_error;
 use crate::ca::{CaError, CaParams, CaStep, MeshParams, StepResult, Witness};
-use crate::rounding::{diff_up, gap_down, step_down, BoxError};
+use crate::rounding::{diff_up, gap_down, step_down};
 use crate::{Direction, Float, PreparedMotion};
 
 /// Conservative advancement of two non-convex triangle meshes (a
@@ -147,41 +146,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         b: &PreparedMotion<T>,
         params: &CaParams<T>,
     ) -> StepResult<T> {
-        // Every node centre, box point and corner lies within the tree's
-        // certified reach of the rotation centre: cover them all.
-        let place = |tree: &BallTree<T>, m: &'_ PreparedMotion<T>| {
-            let r = tree.reach;
-            let (err, reach) = placement_error(m.motion(), t, r);
-            (m.motion().pose_at(t), err, reach)
-        };
-        let (pose, err, reach) = place(self.a, a);
-        let pa = Placed {
-            pose,
-            motion: a,
-            err,
-            reach,
-            box_err: BoxError::new(
-                a.motion().angle_at(t),
-                !a.motion().orientation().is_identity(),
-            ),
-            lever_extra: a.motion().local_reach(),
-            v_l1: a.motion().linear().norm_l1(),
-            w_l1: a.motion().angular().norm_l1(),
-        };
-        let (pose, err, reach) = place(self.b, b);
-        let pb = Placed {
-            pose,
-            motion: b,
-            err,
-            reach,
-            box_err: BoxError::new(
-                b.motion().angle_at(t),
-                !b.motion().orientation().is_identity(),
-            ),
-            lever_extra: b.motion().local_reach(),
-            v_l1: b.motion().linear().norm_l1(),
-            w_l1: b.motion().angular().norm_l1(),
-        };
+        let (pa, pb) = (Placed::new(self.a, a, t), Placed::new(self.b, b, t));
         let rates = Rates {
             kind: params.bound.cheap_kind(),
             one_sided: params.one_sided,

@@ -5,7 +5,7 @@
 use super::queue::NodeStep;
 use super::MeshPair;
 use crate::bvh::{BallTree, Leaf};
-use crate::ca::driver::gap_step;
+use crate::ca::driver::{gap_step, placement_error};
 use crate::ca::{StepResult, Witness};
 use crate::geometry::closest::triangle_triangle_vec;
 use crate::rounding::{crude_speed_up, gap_down, lever_up, step_down, BoxError};
@@ -35,7 +35,26 @@ pub(super) struct PlacedNode<T> {
     thin: Option<Direction<T>>,
 }
 
-impl<T: Float> Placed<'_, T> {
+impl<'p, T: Float> Placed<'p, T> {
+    /// What the body of `tree` moving by `motion` contributes at time `t`:
+    /// its pose, and the placement error and reach covering every node
+    /// centre, box point and corner (all within the tree's certified reach
+    /// of the body origin).
+    pub(super) fn new(tree: &BallTree<T>, motion: &'p PreparedMotion<T>, t: T) -> Self {
+        let m = motion.motion();
+        let (err, reach) = placement_error(m, t, tree.reach);
+        Self {
+            pose: m.pose_at(t),
+            motion,
+            err,
+            reach,
+            box_err: BoxError::new(m.angle_at(t), !m.orientation().is_identity()),
+            lever_extra: m.local_reach(),
+            v_l1: m.linear().norm_l1(),
+            w_l1: m.angular().norm_l1(),
+        }
+    }
+
     pub(super) fn place(&self, tree: &BallTree<T>, node: u32) -> PlacedNode<T> {
         let n = &tree.nodes[node as usize];
         let thin = self.pose.transform_vector(Vec3::from_array(n.obb.axes[2]));
