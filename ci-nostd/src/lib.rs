@@ -27,7 +27,7 @@ pub fn time_of_impact(
     xb: [f32; 3],
 ) -> Option<f32> {
     use motion_bound::ca::{self, CaParams, ConvexPair, Witness};
-    use motion_bound::{Pose, Vec3};
+    use motion_bound::{Point3, Pose, Vec3};
     let oracle = |pa: &Pose<f32>, pb: &Pose<f32>| {
         let mut best: Option<Witness<f32>> = None;
         for p in a {
@@ -38,11 +38,7 @@ pub fn time_of_impact(
                 );
                 let d = (y - x).length();
                 if best.is_none_or(|w| d < w.distance) {
-                    best = Some(Witness {
-                        distance: d,
-                        on_a: x,
-                        on_b: y,
-                    });
+                    best = Some(Witness::new(d, Point3::from_vec3(x), Point3::from_vec3(y)));
                 }
             }
         }
