@@ -130,10 +130,15 @@ fn run<T: Precision>(spec: &CaseSpec) {
     }
 
     // 2. Against the library's own plain floating-point evaluation of p'(t).n.
+    // The lever arm is measured from the rotation centre in the body frame.
+    let c = case.motion.local_centre().to_array().map(|x| x.to_f64());
     let r_max = case
         .vertices
         .iter()
-        .map(|r| norm::<T>(*r).to_f64())
+        .map(|r| {
+            let d: [f64; 3] = core::array::from_fn(|k| r[k].to_f64() - c[k]);
+            (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt()
+        })
         .fold(0.0f64, f64::max);
     let v_norm = norm::<T>(case.motion.linear().to_array()).to_f64();
     let w_norm = norm::<T>(case.motion.angular().to_array()).to_f64();

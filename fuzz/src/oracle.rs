@@ -206,12 +206,16 @@ impl<T: Precision> Scaled<T> {
         let iv = m.interval();
         let scaled = TimeInterval::try_new(scale_t(iv.start(), b), scale_t(iv.end(), b)).and_then(
             |interval| {
+                // The start orientation is scale-free; the rotation centre in
+                // the body frame scales with the body's points.
                 RigidMotion::try_new(
                     Point3::ORIGIN,
                     Vec3::from_array(linear),
                     Vec3::from_array(scale(m.angular().to_array(), -b)),
                     interval,
-                )
+                )?
+                .with_orientation(m.orientation())
+                .try_with_local_centre(Vec3::from_array(scale(m.local_centre().to_array(), r_exp)))
             },
         );
         let (case, speed_exp) = match scaled {
@@ -229,7 +233,9 @@ impl<T: Precision> Scaled<T> {
         let mag = linear_terms(v, n, speed_exp)
             .map(|(x, y)| (x * y).abs())
             .sum::<f64>()
-            + max_abs(w) * max_abs(case.vertices.iter().flatten().map(|x| x.to_f64()));
+            + max_abs(w)
+                * (max_abs(case.vertices.iter().flatten().map(|x| x.to_f64()))
+                    + max_abs(case.motion.local_centre().to_array().map(|x| x.to_f64())));
         Self {
             case,
             speed_exp,
@@ -473,6 +479,11 @@ mod tests {
             motion_bound::TimeInterval::try_new(ldexp(iv.start(), -b), ldexp(iv.end(), -b))
                 .unwrap(),
         )
+        .unwrap()
+        .with_orientation(m.orientation())
+        .try_with_local_centre(Vec3::from_array(
+            m.local_centre().to_array().map(|x| ldexp(x, e)),
+        ))
         .unwrap();
         Case {
             vertices: case
