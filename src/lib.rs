@@ -85,6 +85,14 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
+//! ## Scenes
+//!
+//! [`scene::Scene`] holds many bodies over one frame and answers every
+//! pair's first contact at once, after a certified broad phase (each body's
+//! [`scene::SweptBox`], a sweep and prune) that skips what cannot touch; the
+//! skips are proved in [`proofs::scene`] and counted in
+//! [`scene::SceneStats`]. See the [`scene`] module.
+//!
 //! ## Conventions
 //!
 //! * **Frames.** `n`, `v`, `w` and positions are world vectors; body points
@@ -146,6 +154,7 @@
 //! | `reference` | no | **test support**: the exact closed-form oracle ([`reference`](mod@reference)) |
 //! | `faer` | no | **test support**: batched dense sampling of the oracle with faer |
 //! | `testkit` | no | **test support**: hard-case generators, the time-of-impact ground truth, the Table 1 scenes ([`testkit`]) |
+//! | `parallel` | no | [`Scene::par_query`](scene::Scene::par_query): a scene's narrow phase on every core (rayon); implies `std` |
 //! | `arbitrary` | no | **test support**: `Arbitrary` case descriptions for `cargo fuzz` |
 //!
 //! The core's one dependency is [robust](https://crates.io/crates/robust)
@@ -177,6 +186,9 @@ mod math;
 mod mesh;
 mod motion;
 mod rounding;
+#[cfg(feature = "alloc")]
+#[cfg_attr(docsrs, doc(cfg(feature = "alloc")))]
+pub mod scene;
 mod shape;
 
 pub mod proofs;

@@ -44,6 +44,10 @@ pub mod ca_toi {}
 #[doc = include_str!("../proofs/10-one-sided.md")]
 pub mod one_sided {}
 
+/// Scenes: swept boxes, culling, and the skipped work.
+#[doc = include_str!("../proofs/11-scene.md")]
+pub mod scene {}
+
 /// Floating point: every bound is an upper bound for its float inputs.
 #[doc = include_str!("../proofs/floating-point.md")]
 pub mod floating_point {}

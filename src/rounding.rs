@@ -569,6 +569,42 @@ pub(crate) fn from_f64_up<T: Float>(x: f64) -> T {
     }
 }
 
+/// Section "Swept box": a float at least the exact `a + b` of two finite
+/// floats, `next_up(fl(a + b))` (round to nearest never errs by a whole ulp,
+/// so the exact sum lies below the next float; gradual underflow included).
+#[cfg(feature = "alloc")]
+#[inline]
+#[must_use]
+pub(crate) fn add_up<T: Float>(a: T, b: T) -> T {
+    (a + b).next_up()
+}
+
+/// Section "Swept box": a float at most the exact `a - b`,
+/// `next_down(fl(a - b))`.
+#[cfg(feature = "alloc")]
+#[inline]
+#[must_use]
+pub(crate) fn sub_down<T: Float>(a: T, b: T) -> T {
+    (a - b).next_down()
+}
+
+/// Section "Swept box": how far a body's points move along an axis over an
+/// interval of length at most `length`, from their one-sided rate `rate`
+/// along it: `next_up(fl(max(rate, 0) length))`, at least the exact product
+/// (`0` when every point recedes: the extent then never grows).
+#[cfg(feature = "alloc")]
+#[inline]
+#[must_use]
+pub(crate) fn reach_along_up<T: Float>(rate: T, length: T) -> T {
+    if rate > T::ZERO {
+        (rate * length).next_up()
+    } else if rate.is_nan() {
+        T::INFINITY
+    } else {
+        T::ZERO
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::gamma;

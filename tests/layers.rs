@@ -27,7 +27,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
 use std::path::{Path, PathBuf};
 
-const LAYERS: [(&str, u32); 17] = [
+const LAYERS: [(&str, u32); 18] = [
     ("float", 0),
     ("error", 0),
     ("rounding", 0),
@@ -39,6 +39,7 @@ const LAYERS: [(&str, u32); 17] = [
     ("mesh", 6),
     ("bvh", 7),
     ("ca", 8),
+    ("scene", 9),
     ("scenes", 9),
     ("reference", 9),
     ("testkit", 9),

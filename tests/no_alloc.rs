@@ -74,3 +74,53 @@ fn a_steady_query_loop_allocates_nothing() {
         "a fresh pair allocates its scratch space"
     );
 }
+
+/// A scene frame loop: the same scene re-queried with new motions each frame
+/// (`Scene::try_set_motion`), one `SceneWorkspace`: nothing allocated once
+/// the workspace has grown.
+#[test]
+fn a_steady_scene_frame_loop_allocates_nothing() {
+    use motion_bound::scene::{BodyShape, Scene, SceneParams, SceneWorkspace};
+    use motion_bound::TimeInterval;
+    let ring = torus::<f64>(0.5, 0.1, 24, 8).expect("ring");
+    let tree = BallTree::try_from_mesh(&ring).expect("tree");
+    let mut rng = Rng::new(11);
+    let frames: Vec<Vec<RigidMotion<f64>>> = (0..6)
+        .map(|_| {
+            (0..24)
+                .map(|_| {
+                    let x0 = [0, 1, 2].map(|_| rng.range(-3.0, 3.0));
+                    let v = rng.direction().map(|x| x * rng.range(0.0, 1.5));
+                    let w = rng.direction().map(|x| x * rng.range(0.0, 5.0));
+                    RigidMotion::try_from_arrays(x0, v, w).expect("motion")
+                })
+                .collect()
+        })
+        .collect();
+    let mut scene = Scene::try_new(TimeInterval::try_new(0.0, 1.0).expect("frame")).expect("scene");
+    for m in &frames[0] {
+        scene.try_add(BodyShape::Mesh(&tree), *m).expect("body");
+    }
+    let params = SceneParams::default();
+    let mut ws = SceneWorkspace::new();
+    let run = |scene: &mut Scene<'_, f64>, ws: &mut SceneWorkspace<f64>| {
+        let mut tested = 0;
+        for frame in &frames {
+            for (i, m) in frame.iter().enumerate() {
+                scene.try_set_motion(i, *m).expect("same frame");
+            }
+            tested += scene.query(ws, &params).expect("valid").pairs().len();
+        }
+        tested
+    };
+    let warm = run(&mut scene, &mut ws);
+    let mut steady = 0;
+    let info = allocation_counter::measure(|| steady = run(&mut scene, &mut ws));
+    assert_eq!(steady, warm, "the same frames, the same pairs");
+    assert!(warm > 10, "the frames have pairs to test ({warm})");
+    assert_eq!(
+        info.count_total, 0,
+        "{} allocations ({} bytes) in the steady frame loop",
+        info.count_total, info.bytes_total
+    );
+}

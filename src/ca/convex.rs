@@ -70,6 +70,8 @@ pub struct ConvexPair<'a, T, P> {
     a: VertexSet<'a, T>,
     b: VertexSet<'a, T>,
     oracle: P,
+    evq_skipped: u64,
+    evq_evaluated: u64,
 }
 
 impl<'a, T: Float, P: Proximity<T>> ConvexPair<'a, T, P> {
@@ -77,7 +79,21 @@ impl<'a, T: Float, P: Proximity<T>> ConvexPair<'a, T, P> {
     /// rotation centre) with the distance oracle `oracle`.
     #[must_use]
     pub const fn new(a: VertexSet<'a, T>, b: VertexSet<'a, T>, oracle: P) -> Self {
-        Self { a, b, oracle }
+        Self {
+            a,
+            b,
+            oracle,
+            evq_skipped: 0,
+            evq_evaluated: 0,
+        }
+    }
+
+    /// How many steps under [`BoundChoice::Auto`] took NEVQ alone (its step
+    /// already ends the query, or neither body turns, so EVQ equals NEVQ)
+    /// and how many evaluated EVQ as well.
+    #[must_use]
+    pub const fn bound_counts(&self) -> (u64, u64) {
+        (self.evq_skipped, self.evq_evaluated)
     }
 
     /// The oracle.
@@ -143,10 +159,15 @@ impl<T: Float, P: Proximity<T>> CaStep<T> for ConvexPair<'_, T, P> {
             BoundChoice::Evq => step_with(BoundKind::Evq),
             BoundChoice::Auto => {
                 let cheap = step_with(BoundKind::Nevq);
-                // NEVQ's step already reaches the end of the bounds' interval.
-                if cheap >= diff_up(a.motion().interval().end(), t) {
+                // NEVQ's step already reaches the end of the bounds' interval,
+                // or neither body turns (EVQ's rotational term is then zero:
+                // proofs/11-scene.md, Lemma 11.3).
+                let turning = a.arc().rotating || b.arc().rotating;
+                if !turning || cheap >= diff_up(a.motion().interval().end(), t) {
+                    self.evq_skipped += 1;
                     cheap
                 } else {
+                    self.evq_evaluated += 1;
                     cheap.max_nan(step_with(BoundKind::Evq))
                 }
             }

@@ -154,6 +154,54 @@ impl<T: Float> RigidMotion<T> {
         })
     }
 
+    /// The motion of a body turning about its body point `local_centre` (its
+    /// centre of mass, about which engines integrate), given as an engine
+    /// tracks it: the centre's world position `centre` at `t = 0`, the start
+    /// orientation `rotation`, the centre's linear velocity `linear` and the
+    /// angular velocity `angular` (world vectors), over `[0, duration]`:
+    /// `p(t) = centre + linear t + R(angular t) rotation (r - local_centre)`.
+    /// The components are kept as given (nothing is rounded), unlike
+    /// [`try_with_local_centre`](Self::try_with_local_centre), which moves the
+    /// centre so as to keep the body origin's start position.
+    ///
+    /// # Errors
+    /// As [`try_from_start`](Self::try_from_start), and
+    /// [`InputError::NonFinite`] or [`InputError::TooLarge`] with
+    /// [`Quantity::LocalCentre`].
+    ///
+    /// ```
+    /// use motion_bound::{BodyPoint, Point3, RigidMotion, Rotation, Vec3};
+    /// // A body whose centre of mass (1, 0, 0) in its frame sits at the world
+    /// // origin, turned a quarter about z, spinning about that centre.
+    /// let turned = Rotation::try_from_axis_angle(Vec3::new(0.0, 0.0, 1.0), core::f64::consts::FRAC_PI_2)?;
+    /// let m = RigidMotion::try_about_centre(
+    ///     Point3::new(0.0, 0.0, 0.0), Vec3::new(1.0, 0.0, 0.0), turned,
+    ///     Vec3::ZERO, Vec3::new(0.0, 0.0, 3.0), 1.0,
+    /// )?;
+    /// let origin = m.point_at(BodyPoint::new(0.0, 0.0, 0.0), 0.0);
+    /// assert!((origin.to_vec3() - Vec3::new(0.0, -1.0, 0.0)).length() < 1e-15);
+    /// let pivot = m.point_at(BodyPoint::new(1.0, 0.0, 0.0), 0.7);
+    /// assert!(pivot.to_vec3().length() < 1e-15);
+    /// # Ok::<(), motion_bound::InputError>(())
+    /// ```
+    pub fn try_about_centre(
+        centre: Point3<T>,
+        local_centre: Vec3<T>,
+        rotation: Rotation<T>,
+        linear: Vec3<T>,
+        angular: Vec3<T>,
+        duration: T,
+    ) -> Result<Self, InputError> {
+        check_components(local_centre.to_array(), Quantity::LocalCentre)?;
+        let m = Self::try_new(centre, linear, angular, frame_interval(duration)?)?;
+        Ok(Self {
+            orientation: rotation,
+            local_centre,
+            local_reach: reach_up(local_centre),
+            ..m
+        })
+    }
+
     /// The motion with constant velocities that carries a body from the pose
     /// `start` at `t = 0` to the pose `end` at `t = duration`, rotating about
     /// its origin by the shortest rotation from `start`'s orientation to
@@ -227,10 +275,13 @@ impl<T: Float> RigidMotion<T> {
         }
     }
 
-    /// The same motion about another rotation centre, the body point
-    /// `local_centre` (parry's `local_center`): the body's pose at `t = 0` is
-    /// kept (up to rounding), the linear velocity becomes that of the new
-    /// centre, the angular velocity is unchanged.
+    /// The motion with the same start pose (up to rounding) and the same
+    /// velocities, but turning about the body point `local_centre` (parry's
+    /// `local_center`) instead: the linear velocity is now that centre's,
+    /// and the centre's world position is moved so that the body origin
+    /// keeps its start position. (To give the centre's world position
+    /// directly, as engines track it, use
+    /// [`try_about_centre`](Self::try_about_centre).)
     ///
     /// # Errors
     /// [`InputError::NonFinite`] or [`InputError::TooLarge`] with

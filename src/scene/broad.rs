@@ -1,0 +1,220 @@
+//! The certified broad phase: each body's swept box over the frame, then a
+//! sweep and prune over the boxes.
+//!
+//! The sweep and prune is written here rather than taken from a crate: it is
+//! forty lines over our own certified boxes, generic over `f32` and `f64`,
+//! needs only `alloc` (the scene query works without `std`), allocates
+//! nothing once its vectors have grown, and reports pairs in a fixed order.
+//! The broad-phase crates we looked at are tied to one float type or to
+//! `std`, or return pairs in an order that depends on insertion or on
+//! threads; at the measured share (a few percent of a sparse frame, see
+//! `docs/performance.md`) a tree would not pay for the dependency.
+
+use alloc::vec::Vec;
+
+use crate::ca::placement_error;
+use crate::rounding::{add_up, diff_up, reach_along_up, sub_down};
+use crate::{BoundKind, BoundingBall, Direction, Float, Point3, PreparedMotion, RigidMotion, Vec3};
+
+/// An axis-aligned box that holds every point of a body at every time of its
+/// motion's interval (`proofs/11-scene.md`, Lemma 11.1).
+///
+/// Built from the body's bounding ball placed at the start, plus along each
+/// of the six axis directions the ball's one-sided rate
+/// ([`DirectedProbe::ball_rate`](crate::DirectedProbe::ball_rate), EVQ)
+/// times the interval's length, every operation rounded outwards: tighter
+/// than the ball grown by `(|v| + |w| r) T`, since a body drifting along
+/// `+x` does not grow along `-x`, and its rotation only along the directions
+/// its arc sweeps. A body that does not turn takes its exact velocity
+/// (`v . e_k = v_k`) and no bound at all; a body that does not move, none
+/// either.
+///
+/// ```
+/// use motion_bound::scene::SweptBox;
+/// use motion_bound::{BoundingBall, RigidMotion};
+/// let ball = BoundingBall::try_new([0.0; 3], 1.0)?;
+/// // Drifting along +x at 2 over [0, 1], not turning.
+/// let m = RigidMotion::try_from_arrays([0.0; 3], [2.0, 0.0, 0.0], [0.0; 3])?;
+/// let b = SweptBox::new(&ball, &m);
+/// assert!(b.hi().x >= 3.0 && b.hi().x < 3.0 + 1e-12);
+/// assert!(b.lo().x <= -1.0 && b.lo().x > -1.0 - 1e-12); // nothing grows backwards
+/// # Ok::<(), motion_bound::InputError>(())
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SweptBox<T> {
+    lo: [T; 3],
+    hi: [T; 3],
+}
+
+/// Which path a swept box took (for the scene's counters).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum BoxPath {
+    /// `v = 0` and `w = 0`: the start box, no rate.
+    Static,
+    /// `w = 0`: exact velocities, no bound and no arc.
+    Translating,
+    /// Six one-sided EVQ ball rates.
+    Turning,
+}
+
+impl<T: Float> SweptBox<T> {
+    /// The swept box of a body held by `ball` (in the body frame) moving by
+    /// `motion` over its interval.
+    #[must_use]
+    pub fn new(ball: &BoundingBall<T>, motion: &RigidMotion<T>) -> Self {
+        Self::with_path(ball, motion).0
+    }
+
+    pub(super) fn with_path(ball: &BoundingBall<T>, motion: &RigidMotion<T>) -> (Self, BoxPath) {
+        let iv = motion.interval();
+        let t0 = iv.start();
+        // The ball's centre placed at the start, within `err` of its exact
+        // position (`proofs/floating-point.md`, "Pose" and "Orientation").
+        let (err, _) = placement_error(motion, t0, ball.outer_radius_up());
+        let c = motion
+            .pose_at(t0)
+            .transform_point(Vec3::from_array(*ball.centre()))
+            .to_array();
+        let rho = ball.radius();
+        let mut lo: [T; 3] = core::array::from_fn(|k| sub_down(sub_down(c[k], rho), err));
+        let mut hi: [T; 3] = core::array::from_fn(|k| add_up(add_up(c[k], rho), err));
+        let (v, w) = (motion.linear().to_array(), motion.angular());
+        let path = if w != Vec3::ZERO {
+            BoxPath::Turning
+        } else if v != [T::ZERO; 3] {
+            BoxPath::Translating
+        } else {
+            BoxPath::Static
+        };
+        let len = diff_up(iv.end(), t0);
+        match path {
+            BoxPath::Static => {}
+            BoxPath::Translating => {
+                for k in 0..3 {
+                    hi[k] = add_up(hi[k], reach_along_up(v[k], len));
+                    lo[k] = sub_down(lo[k], reach_along_up(-v[k], len));
+                }
+            }
+            BoxPath::Turning => {
+                let prepared = PreparedMotion::new(motion);
+                for (k, axis) in [Direction::X, Direction::Y, Direction::Z]
+                    .into_iter()
+                    .enumerate()
+                {
+                    let up = prepared.probe(axis).ball_rate(ball, BoundKind::Evq);
+                    let down = prepared.probe(-axis).ball_rate(ball, BoundKind::Evq);
+                    hi[k] = add_up(hi[k], reach_along_up(up, len));
+                    lo[k] = sub_down(lo[k], reach_along_up(down, len));
+                }
+            }
+        }
+        (Self { lo, hi }, path)
+    }
+
+    /// The low corner.
+    #[must_use]
+    pub fn lo(&self) -> Point3<T> {
+        Point3::from_array(self.lo)
+    }
+
+    /// The high corner.
+    #[must_use]
+    pub fn hi(&self) -> Point3<T> {
+        Point3::from_array(self.hi)
+    }
+
+    /// Whether the boxes are more than `distance` apart along some axis
+    /// (certified: the gap is computed rounded down). Bodies in boxes that
+    /// are apart by more than the contact distance cannot come within it
+    /// during the frame (`proofs/11-scene.md`, Lemma 11.2).
+    #[must_use]
+    pub fn is_apart(&self, other: &Self, distance: T) -> bool {
+        (0..3).any(|k| self.is_apart_along(other, k, distance))
+    }
+
+    #[inline]
+    fn is_apart_along(&self, other: &Self, k: usize, distance: T) -> bool {
+        sub_down(other.lo[k], self.hi[k]) > distance || sub_down(self.lo[k], other.hi[k]) > distance
+    }
+}
+
+/// Every pair `(i, j)`, `i < j`, of boxes that are not apart by more than
+/// `distance`, except pairs where both `skip[i]` and `skip[j]`, in increasing
+/// order: a sweep and prune along the axis on which the boxes' centres
+/// spread most. `order` is scratch space; both vectors are cleared first.
+pub(super) fn overlapping_pairs<T: Float>(
+    boxes: &[SweptBox<T>],
+    skip: &[bool],
+    distance: T,
+    order: &mut Vec<(T, u32)>,
+    out: &mut Vec<(u32, u32)>,
+) {
+    out.clear();
+    order.clear();
+    if boxes.len() < 2 {
+        return;
+    }
+    let axis = spread_axis(boxes);
+    order.extend(
+        boxes
+            .iter()
+            .enumerate()
+            .map(|(i, b)| (b.lo[axis], index(i))),
+    );
+    // Keys are unique (ties broken by index): the order is deterministic.
+    order.sort_unstable_by(|a, b| {
+        a.0.partial_cmp(&b.0)
+            .unwrap_or(core::cmp::Ordering::Equal)
+            .then(a.1.cmp(&b.1))
+    });
+    for (n, &(_, i)) in order.iter().enumerate() {
+        let a = &boxes[i as usize];
+        for &(lo_j, j) in &order[n + 1..] {
+            // Sorted by lo: every later box is at least as far along the axis.
+            if sub_down(lo_j, a.hi[axis]) > distance {
+                break;
+            }
+            if skip[i as usize] && skip[j as usize] {
+                continue;
+            }
+            let b = &boxes[j as usize];
+            let other = [(axis + 1) % 3, (axis + 2) % 3];
+            if other.iter().any(|&k| a.is_apart_along(b, k, distance))
+                || a.is_apart_along(b, axis, distance)
+            {
+                continue;
+            }
+            out.push((i.min(j), i.max(j)));
+        }
+    }
+    out.sort_unstable();
+}
+
+fn index(i: usize) -> u32 {
+    u32::try_from(i).unwrap_or(u32::MAX)
+}
+
+/// The axis along which the boxes' centres have the largest variance.
+fn spread_axis<T: Float>(boxes: &[SweptBox<T>]) -> usize {
+    let n = boxes.len() as f64;
+    let mut best = (0, -1.0);
+    for k in 0..3 {
+        let centre = |b: &SweptBox<T>| {
+            let c = 0.5 * b.lo[k].to_f64() + 0.5 * b.hi[k].to_f64();
+            if c.is_finite() {
+                c
+            } else {
+                0.0
+            }
+        };
+        let mean = boxes.iter().map(centre).sum::<f64>() / n;
+        let var = boxes
+            .iter()
+            .map(|b| (centre(b) - mean) * (centre(b) - mean))
+            .sum::<f64>();
+        if var > best.1 {
+            best = (k, var);
+        }
+    }
+    best.0
+}
