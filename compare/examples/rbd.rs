@@ -188,6 +188,7 @@ struct Tally {
     parry_ms: f64,
     ours_on_parry_pairs_ms: f64,
     parry_hits: u64,
+    skips: motion_bound::scene::SceneStats,
 }
 
 fn run(name: &str, shape: &Shape, bodies: usize, half: f64, frames: usize, seed: u64) {
@@ -272,6 +273,13 @@ fn run(name: &str, shape: &Shape, bodies: usize, half: f64, frames: usize, seed:
         tally.broad_ms += broad;
         tally.iterations += st.iterations;
         tally.contacts += report.contacts().count() as u64;
+        let k = &mut tally.skips;
+        k.static_bodies += st.static_bodies;
+        k.translating_bodies += st.translating_bodies;
+        k.box_rates_skipped += st.box_rates_skipped;
+        k.pairs_all += st.pairs_all;
+        k.pairs_static += st.pairs_static;
+        k.pairs_culled += st.pairs_culled;
         if f % CHECK_EVERY != CHECK_EVERY - 1 {
             continue;
         }
@@ -359,6 +367,17 @@ fn run(name: &str, shape: &Shape, bodies: usize, half: f64, frames: usize, seed:
         tally.ours_on_parry_pairs_ms / tally.parry_queries.max(1) as f64,
         tally.parry_ms / tally.ours_on_parry_pairs_ms.max(1e-12),
         tally.parry_hits,
+    );
+    let k = &tally.skips;
+    println!(
+        "  skipped over all frames: {} of {} pairs culled by the swept boxes, {} pairs of two \
+         resting bodies, {} box rates of {} resting and {} non-turning bodies",
+        k.pairs_culled,
+        k.pairs_all,
+        k.pairs_static,
+        k.box_rates_skipped,
+        k.static_bodies,
+        k.translating_bodies
     );
     println!(
         "  (largest gap between our motion's end and rapier's next position: {worst_end:.2e})"
