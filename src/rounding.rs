@@ -50,7 +50,7 @@ pub(crate) fn nevq_rotational_up<T: Float>(c_norm: T, w_l1: T, r_hat: T) -> T {
     c_norm * r_hat * (T::ONE + gamma::<T>(3))
         + T::TWO * gamma::<T>(2) * w_l1 * r_hat
         + T::TWO * T::SQRT_ETA_UP * r_hat
-        + T::from_u32(4) * T::ETA * (T::ONE + r_hat)
+        + T::from_u32(4) * T::ETA_NORMAL * (T::ONE + r_hat)
 }
 
 /// Section "EVQ": with `E^` the computed extremal value and `theta_m` the
@@ -65,7 +65,7 @@ pub(crate) fn evq_rotational_up<T: Float>(c_norm: T, e_hat: T, theta_m: T, w_l1:
         + c_norm * r_hat * (u * (T::from_u32(48) + T::from_u32(12) * theta_m))
         + T::from_u32(24) * u * w_l1 * r_hat
         + T::TWO * T::SQRT_ETA_UP * (r_hat + c_norm)
-        + T::from_u32(16) * T::ETA * (T::ONE + r_hat) * (T::ONE + c_norm)
+        + T::from_u32(16) * T::ETA_NORMAL * (T::ONE + r_hat) * (T::ONE + c_norm)
 }
 
 /// Section "One-sided": twice the error bound of one computed endpoint value
@@ -143,7 +143,7 @@ pub(crate) fn frame_margin_up<T: Float>(w_l1: T, theta_m: T, oriented: bool, off
     if c == T::ZERO {
         return T::ZERO;
     }
-    let k = T::UNIT_ROUNDOFF * w_l1 * c * (T::ONE + gamma::<T>(4)) + T::from_u32(8) * T::ETA;
+    let k = T::UNIT_ROUNDOFF * w_l1 * c * (T::ONE + gamma::<T>(4)) + T::from_u32(8) * T::ETA_NORMAL;
     if k.is_nan() {
         T::INFINITY
     } else {
@@ -188,7 +188,7 @@ pub(crate) fn displacement_up<T: Float>(speed: T, length: T) -> T {
     if length == T::ZERO {
         return T::ZERO;
     }
-    let d = speed * length * (T::ONE + gamma::<T>(3)) + T::ETA;
+    let d = speed * length * (T::ONE + gamma::<T>(3)) + T::ETA_NORMAL;
     if d.is_nan() {
         T::INFINITY
     } else {
@@ -213,7 +213,7 @@ pub(crate) fn pose_error_up<T: Float>(angle: T, radius: T, centre_reach: T, orie
     let e = u
         * ((T::from_u32(8) * angle.abs() + pose_rotation_constant::<T>(oriented)) * radius
             + T::from_u32(8) * centre_reach)
-        + T::from_u32(8) * T::ETA;
+        + T::from_u32(8) * T::ETA_NORMAL;
     let e = e * (T::ONE + gamma::<T>(8));
     if e.is_nan() {
         T::INFINITY
@@ -272,7 +272,7 @@ impl<T: Float> BoxError<T> {
             * (T::ONE + gamma::<T>(12));
         Self {
             k: if k.is_nan() { T::INFINITY } else { k },
-            k0: T::from_u32(32) * T::ETA,
+            k0: T::from_u32(32) * T::ETA_NORMAL,
         }
     }
 
@@ -448,7 +448,7 @@ pub(crate) fn crude_speed_up<T: Float>(v_l1: T, w_l1: T, lever: T) -> T {
 #[inline]
 #[must_use]
 pub(crate) fn box_residual_up<T: Float>(max_sq: T, max_mag: T) -> T {
-    let rho = (radius_up(max_sq) + gamma::<T>(6) * max_mag + T::from_u32(16) * T::ETA)
+    let rho = (radius_up(max_sq) + gamma::<T>(6) * max_mag + T::from_u32(16) * T::ETA_NORMAL)
         * (T::ONE + gamma::<T>(2));
     rho * (T::ONE + gamma::<T>(7))
 }
@@ -489,7 +489,7 @@ pub(crate) fn polytope_radius_up<T: Float>(max_l1: T) -> T {
 pub(crate) fn polytope_support_slack<T: Float>(m: T, rho: T, x: T) -> T {
     let six = T::from_u32(6);
     T::from_u32(4) * gamma::<T>(4) * (six * m * rho + x) * (T::ONE + gamma::<T>(8))
-        + T::from_u32(64) * T::ETA * (T::ONE + m) * (T::ONE + rho)
+        + T::from_u32(64) * T::ETA_NORMAL * (T::ONE + m) * (T::ONE + rho)
 }
 
 /// Section "GJK": a certified lower bound of the separation
@@ -506,7 +506,7 @@ pub(crate) fn separation_down<T: Float>(delta: T, mags: T, slacks: T) -> T {
     let slack = slacks * (T::ONE + gamma::<T>(4));
     let m = (T::UNIT_ROUNDOFF * delta.abs() + gamma::<T>(3) * mags + slack)
         * (T::ONE + gamma::<T>(4))
-        + T::from_u32(8) * T::ETA;
+        + T::from_u32(8) * T::ETA_NORMAL;
     let sep = delta - m;
     if sep > T::ZERO {
         sep * (T::ONE - gamma::<T>(8))
@@ -541,7 +541,7 @@ pub(crate) fn slab_rounding<T: Float>(scale: T, n_l1: T) -> T {
 pub(crate) fn orient3d_error<T: Float>(permanent: T, z_sum: T) -> T {
     let u = T::UNIT_ROUNDOFF;
     (T::from_u32(7) + T::from_u32(56) * u) * u * permanent
-        + T::from_u32(8) * T::ETA * (T::ONE + z_sum)
+        + T::from_u32(8) * T::ETA_NORMAL * (T::ONE + z_sum)
 }
 
 /// Section "Meeting" (Lemma FP-M): the 2D orientation's bound,
@@ -550,7 +550,7 @@ pub(crate) fn orient3d_error<T: Float>(permanent: T, z_sum: T) -> T {
 #[must_use]
 pub(crate) fn orient2d_error<T: Float>(magnitude: T) -> T {
     let u = T::UNIT_ROUNDOFF;
-    (T::from_u32(3) + T::from_u32(16) * u) * u * magnitude + T::from_u32(4) * T::ETA
+    (T::from_u32(3) + T::from_u32(16) * u) * u * magnitude + T::from_u32(4) * T::ETA_NORMAL
 }
 
 /// Section "Summary": `x` (a non-negative finite `f64`) converted to `T`,
@@ -565,7 +565,7 @@ pub(crate) fn from_f64_up<T: Float>(x: f64) -> T {
     if y.to_f64() >= x {
         y
     } else {
-        y * (T::ONE + T::TWO * T::UNIT_ROUNDOFF) + T::ETA
+        y * (T::ONE + T::TWO * T::UNIT_ROUNDOFF) + T::ETA_NORMAL
     }
 }
 
