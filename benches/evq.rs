@@ -14,13 +14,18 @@
 //!   the distance-from-axis scan).
 //! * `nevq_vs_evq`: the same query through NEVQ and EVQ, throughput one
 //!   element, so the two times per query can be divided directly.
+//! * `evq_tree_vs_scan`: the same query by scan and by branch and bound over
+//!   the body's `VertexTree` (`N = 64` to `131072`), throughput one
+//!   query: the ratio is the tree's speed-up.
 
 use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, Throughput};
 use motion_bound::testkit::{random_blob, SplitMix64};
-use motion_bound::{evq, nevq, Direction, Float, RigidMotion, VertexSet};
+use motion_bound::{
+    evq, nevq, Direction, Float, PreparedMotion, RigidMotion, VertexSet, VertexTree,
+};
 
 /// The unit rotation axis of every benchmarked motion.
 const AXIS: [f64; 3] = [0.36, -0.48, 0.8];
@@ -119,7 +124,52 @@ fn compare_precision<T: Float>(c: &mut Criterion, precision: &str) {
     group.finish();
 }
 
+/// EVQ of a whole body by scan and by branch and bound over its
+/// `VertexTree` (the same body, motion and direction; the tree's value is
+/// asserted equal to the scan's first), throughput one query.
+fn tree_precision<T: Float>(c: &mut Criterion, precision: &str) {
+    let mut group = c.benchmark_group("evq_tree_vs_scan");
+    group
+        .sample_size(20)
+        .measurement_time(Duration::from_secs(2))
+        .warm_up_time(Duration::from_millis(500))
+        .throughput(Throughput::Elements(1));
+    for size in [64, 256, 1024, 16384, 131_072] {
+        let vertices = body::<T>(size);
+        let set = VertexSet::try_new(&vertices).expect("valid body");
+        let tree = VertexTree::try_new(&set).expect("valid tree");
+        for (regime, omega) in REGIMES {
+            let (motion, n) = query::<T>(omega);
+            assert_full_scan(&set, &motion, n);
+            let probe = PreparedMotion::new(&motion).probe(n);
+            let (fast, visited) = tree.speed_with_stats(&probe);
+            assert!(
+                fast == probe.evq_speed(&set),
+                "the tree's value is the scan's"
+            );
+            println!("evq_tree_vs_scan {regime}/{precision}/{size}: {visited} nodes visited");
+            group.bench_with_input(
+                BenchmarkId::new(format!("scan/{regime}/{precision}"), size),
+                &(set, motion, n),
+                |b, (set, motion, n)| {
+                    b.iter(|| evq(black_box(set), black_box(motion), black_box(*n)));
+                },
+            );
+            group.bench_with_input(
+                BenchmarkId::new(format!("tree/{regime}/{precision}"), size),
+                &(&tree, motion, n),
+                |b, (tree, motion, n)| {
+                    b.iter(|| black_box(tree).evq(black_box(motion), black_box(*n)));
+                },
+            );
+        }
+    }
+    group.finish();
+}
+
 fn evq_benches(c: &mut Criterion) {
+    tree_precision::<f64>(c, "f64");
+    tree_precision::<f32>(c, "f32");
     scan_precision::<f32>(c, "f32");
     scan_precision::<f64>(c, "f64");
     compare_precision::<f32>(c, "f32");

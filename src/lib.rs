@@ -212,7 +212,7 @@ pub use bound::nevq::nevq_speed_unmargined;
 pub use bound::nevq::{nevq, nevq_rate, nevq_speed};
 pub use bound::probe::DirectedProbe;
 #[cfg(feature = "alloc")]
-pub use bvh::BallTree;
+pub use bvh::{BallTree, VertexTree};
 pub use error::{InputError, Quantity};
 pub use float::Float;
 pub use geometry::closest::{point_triangle, segment_segment, triangle_triangle, ClosestPoints};

@@ -15,7 +15,9 @@ use motion_bound::ca::{
 use motion_bound::scenes::{board, icosphere, torus, TorusKnot};
 use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
 use motion_bound::testkit::toi::{fly_by, random_rotation, reach, rotate_mesh, FlyBy, Rng};
-use motion_bound::{BallTree, BoundingBall, PreparedMotion, RigidMotion, TriMesh, VertexSet};
+use motion_bound::{
+    BallTree, BoundingBall, PreparedMotion, RigidMotion, TriMesh, VertexSet, VertexTree,
+};
 
 /// Ground-truth samples per query over `[0, 1]`.
 const SAMPLES: usize = 256;
@@ -336,8 +338,17 @@ fn convex_solids_through_gjk_are_never_late_and_never_missed() {
         let params = CaParams::default()
             .with_contact_distance(1e-4)
             .with_bound(bound);
-        let report = time_of_impact(&mut ConvexPair::with_gjk(va, vb), &q.a, &q.b, &params)
-            .expect("valid query");
+        // Every other query bounds through the bodies' vertex trees
+        // (`proofs/08-ball-bound.md`, Lemma 8.2).
+        let (ta, tb) = (
+            VertexTree::try_new(&va).expect("valid"),
+            VertexTree::try_new(&vb).expect("valid"),
+        );
+        let mut pair = ConvexPair::with_gjk(va, vb);
+        if k % 2 == 1 {
+            pair = pair.with_vertex_trees(Some(&ta), Some(&tb));
+        }
+        let report = time_of_impact(&mut pair, &q.a, &q.b, &params).expect("valid query");
         let truth = first_sampled_contact(
             MeshRef::from(&a),
             &q.a,

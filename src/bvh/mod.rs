@@ -6,10 +6,12 @@ use alloc::vec::Vec;
 
 mod eigen;
 mod oriented_box;
+mod vertex_tree;
 
 use eigen::principal_axes;
 
 pub(crate) use oriented_box::OrientedBox;
+pub use vertex_tree::VertexTree;
 
 use crate::rounding::offset_radius_up;
 use crate::{BoundingBall, Float, InputError};

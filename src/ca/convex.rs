@@ -72,6 +72,9 @@ pub struct ConvexPair<'a, T, P> {
     oracle: P,
     evq_skipped: u64,
     evq_evaluated: u64,
+    /// Each body's vertex tree, if given: its EVQ bounds by branch and bound.
+    #[cfg(feature = "alloc")]
+    trees: [Option<&'a crate::VertexTree<T>>; 2],
 }
 
 impl<'a, T: Float, P: Proximity<T>> ConvexPair<'a, T, P> {
@@ -85,7 +88,34 @@ impl<'a, T: Float, P: Proximity<T>> ConvexPair<'a, T, P> {
             oracle,
             evq_skipped: 0,
             evq_evaluated: 0,
+            #[cfg(feature = "alloc")]
+            trees: [None, None],
         }
+    }
+
+    /// With the bodies' vertex trees (built once per body from the same
+    /// vertex sets): the EVQ bounds of each step then cost a branch and bound
+    /// instead of a scan of every vertex, with the same soundness
+    /// (`proofs/08-ball-bound.md`, Lemma 8.2). Worth it for bodies of more
+    /// than a few hundred vertices (`docs/performance.md`); the steps'
+    /// extents still place every vertex. A tree must be built from its
+    /// body's own vertex set; one whose vertex count or summary differs from
+    /// the body's is not used (the scan is).
+    #[cfg(feature = "alloc")]
+    #[must_use]
+    pub fn with_vertex_trees(
+        mut self,
+        a: Option<&'a crate::VertexTree<T>>,
+        b: Option<&'a crate::VertexTree<T>>,
+    ) -> Self {
+        let fits = |t: &&crate::VertexTree<T>, body: &VertexSet<'_, T>| {
+            t.len() == body.len() && t.summary() == body.summary()
+        };
+        self.trees = [
+            a.filter(|t| fits(t, &self.a)),
+            b.filter(|t| fits(t, &self.b)),
+        ];
+        self
     }
 
     /// How many steps under [`BoundChoice::Auto`] took NEVQ alone (its step
@@ -99,6 +129,53 @@ impl<'a, T: Float, P: Proximity<T>> ConvexPair<'a, T, P> {
     /// The oracle.
     pub fn oracle_mut(&mut self) -> &mut P {
         &mut self.oracle
+    }
+}
+
+#[cfg(feature = "alloc")]
+type TreeRef<'a, T> = Option<&'a crate::VertexTree<T>>;
+#[cfg(not(feature = "alloc"))]
+type TreeRef<'a, T> = Option<&'a core::marker::PhantomData<T>>;
+
+impl<'a, T: Float, P> ConvexPair<'a, T, P> {
+    #[cfg(feature = "alloc")]
+    fn trees(&self) -> [TreeRef<'a, T>; 2] {
+        self.trees
+    }
+
+    #[cfg(not(feature = "alloc"))]
+    fn trees(&self) -> [TreeRef<'a, T>; 2] {
+        [None, None]
+    }
+}
+
+/// A body's one-sided rate: by its tree when it has one, else by scan.
+#[inline]
+fn body_rate<T: Float>(
+    probe: &crate::DirectedProbe<T>,
+    body: &VertexSet<'_, T>,
+    tree: TreeRef<'_, T>,
+    kind: BoundKind,
+) -> T {
+    match tree {
+        #[cfg(feature = "alloc")]
+        Some(tree) if kind == BoundKind::Evq => tree.rate(probe, kind),
+        _ => probe.rate(body, kind),
+    }
+}
+
+/// A body's speed bound: by its tree when it has one, else by scan.
+#[inline]
+fn body_speed<T: Float>(
+    probe: &crate::DirectedProbe<T>,
+    body: &VertexSet<'_, T>,
+    tree: TreeRef<'_, T>,
+    kind: BoundKind,
+) -> T {
+    match tree {
+        #[cfg(feature = "alloc")]
+        Some(tree) if kind == BoundKind::Evq => tree.evq_speed(probe),
+        _ => probe.speed(body, kind),
     }
 }
 
@@ -146,11 +223,18 @@ impl<T: Float, P: Proximity<T>> CaStep<T> for ConvexPair<'_, T, P> {
         // One-sided (Lemma 10.2): A along n, B along -n; or the seed's
         // absolute speeds (Lemma 9.1).
         let (pa, pb) = (a.probe(n), b.probe(if params.one_sided { -n } else { n }));
+        let trees = self.trees();
         let step_with = |kind| {
             let mu = if params.one_sided {
-                (pa.rate(&self.a, kind), pb.rate(&self.b, kind))
+                (
+                    body_rate(&pa, &self.a, trees[0], kind),
+                    body_rate(&pb, &self.b, trees[1], kind),
+                )
             } else {
-                (pa.speed(&self.a, kind), pb.speed(&self.b, kind))
+                (
+                    body_speed(&pa, &self.a, trees[0], kind),
+                    body_speed(&pb, &self.b, trees[1], kind),
+                )
             };
             gap_step(gap, params.clearance(), (ea, eb), (ra, rb), mu).0
         };
