@@ -171,10 +171,10 @@ impl<T: Float> VertexTree<T> {
             let n = &self.nodes[i as usize];
             if n.left == NONE {
                 let v = leaf(&self.vertices[n.start as usize..n.end as usize]);
-                if !(v <= best) {
+                if v > best || v.is_nan() {
                     // NaN propagates: a NaN bound is returned as it is.
                     best = v;
-                    if !(best < cap) {
+                    if best >= cap || best.is_nan() {
                         break;
                     }
                 }
