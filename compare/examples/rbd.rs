@@ -22,5 +22,5 @@ fn main() {
             other => panic!("unknown argument {other}"),
         }
     }
-    let _ = motion_bound_compare::rbd::run_both(frames, BoundChoice::Auto);
+    let _ = motion_bound_compare::rbd::run_both(frames, BoundChoice::Auto, false);
 }

@@ -478,22 +478,13 @@ pub const RINGS: RbdScene = RbdScene {
     seed: 2,
 };
 
-/// Runs both scenes (30 bunnies, 40 rings) for `frames` frames with `bound`.
+/// Runs both scenes (30 bunnies, 40 rings) for `frames` frames with
+/// `bound`, printing their lines unless `quiet`.
 #[must_use]
-pub fn run_both(frames: usize, bound: BoundChoice) -> [Tally; 2] {
+pub fn run_both(frames: usize, bound: BoundChoice, quiet: bool) -> [Tally; 2] {
     let bunny = bunny_shape();
-    let a = run(&BUNNIES, &bunny, frames, bound, false);
+    let a = run(&BUNNIES, &bunny, frames, bound, quiet);
     let ring = ring_shape();
-    let b = run(&RINGS, &ring, frames, bound, false);
-    [a, b]
-}
-
-/// As [`run_both`], printing nothing.
-#[must_use]
-pub fn run_both_quiet(frames: usize, bound: BoundChoice) -> [Tally; 2] {
-    let bunny = bunny_shape();
-    let a = run(&BUNNIES, &bunny, frames, bound, true);
-    let ring = ring_shape();
-    let b = run(&RINGS, &ring, frames, bound, true);
+    let b = run(&RINGS, &ring, frames, bound, quiet);
     [a, b]
 }

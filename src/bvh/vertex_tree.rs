@@ -3,7 +3,7 @@
 
 use alloc::vec::Vec;
 
-use crate::rounding::offset_radius_up;
+use crate::shape::ball::enclosing_ball;
 use crate::{
     BodySummary, BoundKind, BoundingBall, DirectedBound, DirectedProbe, Direction, Float,
     InputError, PreparedMotion, Quantity, RigidMotion, VertexSet,
@@ -211,6 +211,7 @@ fn build<T: Float>(
     offset: usize,
     nodes: &mut Vec<VNode<T>>,
 ) -> Result<u32, InputError> {
+    let ball = enclosing_ball(vertices)?;
     let (mut lo, mut hi) = ([T::INFINITY; 3], [-T::INFINITY; 3]);
     for v in vertices.iter() {
         for k in 0..3 {
@@ -218,15 +219,6 @@ fn build<T: Float>(
             hi[k] = hi[k].max_nan(v[k]);
         }
     }
-    let centre: [T; 3] = core::array::from_fn(|k| lo[k] * T::HALF + hi[k] * T::HALF);
-    let mut max_sq = T::ZERO;
-    for v in vertices.iter() {
-        let d = [v[0] - centre[0], v[1] - centre[1], v[2] - centre[2]];
-        max_sq = max_sq.max_nan(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    }
-    // Section "Summary": the rounded-up radius holds every vertex.
-    let ball = BoundingBall::try_new(centre, offset_radius_up(max_sq))
-        .map_err(|_| InputError::TooLarge(Quantity::Radius))?;
     let index = u32::try_from(nodes.len()).map_err(|_| InputError::TooLarge(Quantity::Radius))?;
     let span = |x: usize| u32::try_from(x).unwrap_or(u32::MAX);
     nodes.push(VNode {

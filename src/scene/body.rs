@@ -1,7 +1,7 @@
 //! The bodies of a scene: a shape, its motion over the frame, its groups.
 
-use crate::rounding::offset_radius_up;
-use crate::{BallTree, BoundingBall, Float, InputError, Quantity, RigidMotion, VertexSet};
+use crate::shape::ball::enclosing_ball;
+use crate::{BallTree, BoundingBall, Float, InputError, RigidMotion, VertexSet};
 
 /// The shape of a scene body, in its own frame (the frame its tree or
 /// vertices are given in). A shape is borrowed: every body of the same shape
@@ -63,32 +63,9 @@ impl<T: Float> BodyShape<'_, T> {
         match self {
             Self::Mesh(tree) => Ok(*tree.root_ball()),
             Self::Ball(ball) => Ok(*ball),
-            Self::Convex(set) => convex_ball(set),
+            Self::Convex(set) => enclosing_ball(set.vertices()),
         }
     }
-}
-
-fn convex_ball<T: Float>(set: &VertexSet<'_, T>) -> Result<BoundingBall<T>, InputError> {
-    let (mut lo, mut hi) = ([T::INFINITY; 3], [-T::INFINITY; 3]);
-    for r in set.vertices() {
-        for k in 0..3 {
-            lo[k] = lo[k].min_nan(r[k]);
-            hi[k] = hi[k].max_nan(r[k]);
-        }
-    }
-    // Any centre will do for soundness: the radius is measured from it.
-    let centre: [T; 3] = core::array::from_fn(|k| lo[k] * T::HALF + hi[k] * T::HALF);
-    let mut max_sq = T::ZERO;
-    for r in set.vertices() {
-        let d = [r[0] - centre[0], r[1] - centre[1], r[2] - centre[2]];
-        max_sq = max_sq.max_nan(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-    }
-    BoundingBall::try_new(centre, offset_radius_up(max_sq)).map_err(|e| match e {
-        InputError::TooLarge(_) | InputError::NonFinite(_) => {
-            InputError::TooLarge(Quantity::Radius)
-        }
-        other => other,
-    })
 }
 
 /// Interaction groups, as in most engines: a pair is tested only when each

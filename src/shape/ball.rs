@@ -82,3 +82,30 @@ impl<T: Float> BoundingBall<T> {
         self.outer_up
     }
 }
+
+/// The ball about the centre of the points' bounding box, its radius rounded
+/// up to hold every point (`proofs/floating-point.md`, "Summary"): what a
+/// vertex set's or a tree node's ball is.
+///
+/// # Errors
+/// [`InputError::TooLarge`] with [`Quantity::Radius`] when the radius exceeds
+/// [`Float::MAX_INPUT`] (or the points are not finite).
+#[cfg(feature = "alloc")]
+pub(crate) fn enclosing_ball<T: Float>(points: &[[T; 3]]) -> Result<BoundingBall<T>, InputError> {
+    let (mut lo, mut hi) = ([T::INFINITY; 3], [-T::INFINITY; 3]);
+    for v in points {
+        for k in 0..3 {
+            lo[k] = lo[k].min_nan(v[k]);
+            hi[k] = hi[k].max_nan(v[k]);
+        }
+    }
+    // Any centre will do for soundness: the radius is measured from it.
+    let centre: [T; 3] = core::array::from_fn(|k| lo[k] * T::HALF + hi[k] * T::HALF);
+    let mut max_sq = T::ZERO;
+    for v in points {
+        let d = [v[0] - centre[0], v[1] - centre[1], v[2] - centre[2]];
+        max_sq = max_sq.max_nan(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    }
+    BoundingBall::try_new(centre, crate::rounding::offset_radius_up(max_sq))
+        .map_err(|_| InputError::TooLarge(Quantity::Radius))
+}

@@ -782,10 +782,10 @@ fn main() {
     }
 
     pb.set_message("RBD scenes (EVQ)");
-    let rbd_evq = motion_bound_compare::rbd::run_both_quiet(frames, BoundChoice::Evq);
+    let rbd_evq = motion_bound_compare::rbd::run_both(frames, BoundChoice::Evq, true);
     pb.inc(1);
     pb.set_message("RBD scenes (NEVQ)");
-    let rbd_nevq = motion_bound_compare::rbd::run_both_quiet(frames, BoundChoice::Nevq);
+    let rbd_nevq = motion_bound_compare::rbd::run_both(frames, BoundChoice::Nevq, true);
     pb.inc(1);
     pb.finish_with_message(format!("done in {:.0} s", started.elapsed().as_secs_f64()));
 
