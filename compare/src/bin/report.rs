@@ -3,7 +3,7 @@
 //! method, the seed's Table 1 with all seven rows, and the plots.
 //!
 //! ```sh
-//! cargo run --release -p motion-bound-compare --bin report            # about 15 minutes on 2 cores
+//! cargo run --release -p motion-bound-compare --bin report            # about 25 minutes on 2 cores
 //! cargo run --release -p motion-bound-compare --bin report -- --quick # under 2 minutes (CI)
 //! ```
 //!
