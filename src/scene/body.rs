@@ -57,7 +57,7 @@ impl<T: Float> BodyShape<'_, T> {
     /// scene computes it once per body.
     ///
     /// # Errors
-    /// [`InputError::TooLarge`] with [`Quantity::Radius`] for a vertex set
+    /// [`InputError::TooLarge`] with [`Quantity::Radius`](crate::Quantity::Radius) for a vertex set
     /// whose bounding ball's radius exceeds [`Float::MAX_INPUT`].
     pub fn bounding_ball(&self) -> Result<BoundingBall<T>, InputError> {
         match self {
