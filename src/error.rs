@@ -59,6 +59,10 @@ pub enum InputError {
     NonPositiveDuration,
     /// A triangle list with no triangle (a ball tree needs one).
     NoTriangles,
+    /// A ball tree's piece length
+    /// ([`BallTree::try_with_piece_length`](crate::BallTree::try_with_piece_length))
+    /// that is NaN, zero or negative.
+    PieceLength,
     /// A triangle names a vertex that does not exist.
     TriangleIndexOutOfRange {
         /// The triangle's position in the list.
@@ -101,6 +105,7 @@ impl fmt::Display for InputError {
             Self::ZeroQuaternion => f.write_str("quaternion has zero length"),
             Self::NonPositiveDuration => f.write_str("duration is not positive"),
             Self::NoTriangles => f.write_str("no triangle"),
+            Self::PieceLength => f.write_str("a piece length that is not positive"),
             Self::TriangleIndexOutOfRange { triangle, index } => {
                 write!(
                     f,

@@ -588,6 +588,37 @@ pub(crate) fn sub_down<T: Float>(a: T, b: T) -> T {
     (a - b).next_down()
 }
 
+/// Section "Pieces": a float at least the exact `a b` of two finite
+/// non-negative floats, `next_up(fl(a b))` (gradual underflow included).
+#[cfg(feature = "alloc")]
+#[inline]
+#[must_use]
+pub(crate) fn mul_up<T: Float>(a: T, b: T) -> T {
+    (a * b).next_up()
+}
+
+/// Section "Pieces": an upper bound of the distance between a point
+/// `wa a + wb b + wc c` of a triangle (dyadic weights `w >= 0` summing to
+/// one, exact in `T`) and its computed `fl(fl(fl(wa a) + fl(wb b)) + fl(wc c))`,
+/// from `l1 = fl(|a|_1 + |b|_1 + |c|_1)`:
+/// `next_up(next_up(gamma_4 l1) + 16 eta_normal)`.
+#[cfg(feature = "alloc")]
+#[inline]
+#[must_use]
+pub(crate) fn piece_corner_error_up<T: Float>(l1: T) -> T {
+    (mul_up(gamma::<T>(4), l1) + T::from_u32(16) * T::ETA_NORMAL).next_up()
+}
+
+/// Section "Pieces": the speed margin of points within `e` of the
+/// computed corners of a piece, for an angular velocity whose computed
+/// 1-norm is `w_l1`: `next_up(fl(2 w_l1) e)`, at least `|w| e`.
+#[cfg(feature = "alloc")]
+#[inline]
+#[must_use]
+pub(crate) fn piece_speed_margin_up<T: Float>(w_l1: T, e: T) -> T {
+    mul_up(T::TWO * w_l1, e)
+}
+
 /// Section "Swept box": how far a body's points move along an axis over an
 /// interval of length at most `length`, from their one-sided rate `rate`
 /// along it: `next_up(fl(max(rate, 0) length))`, at least the exact product

@@ -316,6 +316,29 @@ fn thin_fast_spinning_board_is_never_late_and_never_missed() {
     );
 }
 
+/// A board of 12 large triangles against a fine sphere: the board's
+/// hierarchy of pieces is taken (`proofs/09-ca-toi.md`, Lemma 9.5), and the
+/// ground truth is that of the whole triangles.
+#[test]
+fn a_board_of_large_triangles_is_cut_into_pieces_and_never_late() {
+    let plank = board::<f64>(2.0, 2.0, 0.002).expect("board");
+    let ball = icosphere::<f64>(0.3, 4).expect("sphere");
+    let (tp, tb) = (
+        BallTree::try_from_mesh(&plank).expect("valid"),
+        BallTree::try_from_mesh(&ball).expect("valid"),
+    );
+    assert!(tp.piece_leaf_count() > 1_000, "the board is cut");
+    assert_eq!(MeshPair::new(&tp, &tb).pieces_in_use(), (true, false));
+    run_meshes(
+        "large-triangle board (pieces) vs sphere",
+        &plank,
+        &ball,
+        40.0,
+        queries_per_scene(200),
+        11,
+    );
+}
+
 #[test]
 fn convex_solids_through_gjk_are_never_late_and_never_missed() {
     let ball = icosphere::<f64>(0.3, 1).expect("icosphere");

@@ -6,6 +6,7 @@ use alloc::vec::Vec;
 
 mod eigen;
 mod oriented_box;
+mod pieces;
 mod vertex_tree;
 
 use eigen::principal_axes;
@@ -13,7 +14,7 @@ use eigen::principal_axes;
 pub(crate) use oriented_box::OrientedBox;
 pub use vertex_tree::VertexTree;
 
-use crate::rounding::offset_radius_up;
+use crate::rounding::{add_up, offset_radius_up};
 use crate::{BoundingBall, Float, InputError};
 
 /// Marks a leaf in [`Node::right`].
@@ -45,13 +46,61 @@ impl<T> Node<T> {
     }
 }
 
-/// A leaf: one triangle, its corners (relative to the rotation centre) and
-/// the rounded-up largest distance of a corner from the rotation centre.
+/// A leaf: one triangle or one piece of a large one (`pieces`), its
+/// corners (relative to the rotation centre) and the rounded-up largest
+/// distance of a point of it from the rotation centre.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Leaf<T> {
+    /// The triangle's corners, exactly; a piece's corners as computed.
     pub(crate) corners: [[T; 3]; 3],
     pub(crate) r_hat: T,
+    /// `0` for a whole triangle. For a piece, an upper bound of the distance
+    /// of each computed corner from its exact position: every point of the
+    /// exact piece is within `inflate` of the triangle of `corners`.
+    pub(crate) inflate: T,
+    /// The triangle's index in the mesh.
     pub(crate) triangle: u32,
+}
+
+/// The default piece length: this fraction of the mesh's reach (the largest
+/// vertex distance from the rotation centre).
+const PIECE_FRACTION: f64 = 1.0 / 32.0;
+
+/// By default a mesh gets a hierarchy of pieces when its longest edge
+/// exceeds this fraction of its reach.
+const PIECE_TRIGGER: f64 = 0.5;
+
+/// The default budget of pieces: this many per triangle, and at least
+/// [`MIN_PIECE_BUDGET`].
+const PIECES_PER_TRIANGLE: usize = 4;
+const MIN_PIECE_BUDGET: usize = 16384;
+
+/// The budget of pieces for a length given by the caller.
+const PIECE_BUDGET: usize = 1 << 16;
+
+/// How a tree's hierarchy of pieces is made: it exists when some triangle's
+/// longest edge exceeds `trigger`; every triangle longer than the piece
+/// length is cut down to it, the length being `length` or the least
+/// multiple of it by a power of `sqrt 2` whose pieces fit in `budget`.
+struct PiecePlan {
+    length: f64,
+    trigger: f64,
+    budget: usize,
+}
+
+/// A query uses a mesh's hierarchy of pieces when its largest leaf ball is
+/// more than this many times the other mesh's median leaf ball.
+pub(crate) const PIECES_RATIO: f64 = 4.0;
+
+/// One bounding-volume hierarchy: its nodes (the root first) and leaves.
+#[derive(Clone, Debug)]
+pub(crate) struct Hierarchy<T> {
+    pub(crate) nodes: Vec<Node<T>>,
+    pub(crate) leaves: Vec<Leaf<T>>,
+    depth: usize,
+    /// An upper bound of the distance from the rotation centre of every
+    /// node centre and every box point.
+    pub(crate) reach: T,
 }
 
 /// A triangle mesh with its bounding-volume hierarchy, built once per body.
@@ -70,18 +119,30 @@ pub(crate) struct Leaf<T> {
 /// (centroids along the widest axis or along the box's longest axis,
 /// normals along their principal axis) gives the children the smallest total
 /// box surface. `O(N log^2 N)`: about 0.5 s for 34K triangles here.
+///
+/// A mesh with triangles much longer than its size scale (more than a
+/// quarter of its reach, as a board's or a box's) also gets a second
+/// hierarchy in which those triangles are cut into pieces
+/// ([`try_with_piece_length`](Self::try_with_piece_length)); a query takes
+/// it against a mesh of much smaller triangles. That hierarchy splits at the
+/// median of one key (centroids along the widest axis): about 46 ms for
+/// the 13,768 pieces of a 12-triangle board here.
 #[derive(Clone, Debug)]
 pub struct BallTree<T> {
-    pub(crate) nodes: Vec<Node<T>>,
-    pub(crate) leaves: Vec<Leaf<T>>,
-    depth: usize,
-    /// An upper bound of the distance from the rotation centre of every
-    /// node centre and every box point.
-    pub(crate) reach: T,
+    /// Every triangle whole.
+    pub(crate) whole: Hierarchy<T>,
+    /// Long triangles cut into pieces, when the mesh has any.
+    pub(crate) pieces: Option<Hierarchy<T>>,
+    triangles: usize,
+    /// The largest and the median leaf ball radius of `whole`.
+    leaf_max: f64,
+    leaf_median: f64,
 }
 
 impl<T: Float> BallTree<T> {
-    /// Builds the hierarchy of `triangles` (indices into `vertices`).
+    /// Builds the hierarchy of `triangles` (indices into `vertices`), with
+    /// pieces of `1/32` of the mesh's reach (its largest vertex distance
+    /// from the rotation centre) for triangles longer than a quarter of it ([`try_with_piece_length`](Self::try_with_piece_length)).
     ///
     /// # Errors
     /// [`InputError::NoTriangles`] when there is no triangle,
@@ -89,6 +150,76 @@ impl<T: Float> BallTree<T> {
     /// (meshes built by [`TriMesh`](crate::TriMesh) never have one), and the
     /// core's range errors for vertices out of range.
     pub fn try_new(vertices: &[[T; 3]], triangles: &[[u32; 3]]) -> Result<Self, InputError> {
+        let reach = triangles
+            .iter()
+            .flatten()
+            .filter_map(|&i| vertices.get(i as usize))
+            .map(|v| {
+                let v = v.map(T::to_f64);
+                (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+            })
+            .fold(0.0f64, f64::max);
+        let plan = PiecePlan {
+            length: reach * PIECE_FRACTION,
+            trigger: reach * PIECE_TRIGGER,
+            budget: (PIECES_PER_TRIANGLE * triangles.len()).max(MIN_PIECE_BUDGET),
+        };
+        Self::try_build(vertices, triangles, &plan)
+    }
+
+    /// Builds the hierarchy with pieces of length `length`: when a triangle's
+    /// longest edge exceeds 8 times `length`, the tree gets a second
+    /// hierarchy in which every such triangle is cut into pieces whose edges
+    /// are at most `length` (by longest-edge bisection; at most 4,096 pieces
+    /// a triangle and 65,536 for the mesh, triangles past the budget staying
+    /// whole). `f64::INFINITY` makes no pieces.
+    ///
+    /// A large triangle as one leaf has one volume and one ball, whose
+    /// directed bound is that of its farthest point, against every node of
+    /// the other body near any part of it: a mesh of a few large triangles
+    /// then costs far more than the same shape finely cut. A query takes the
+    /// hierarchy of pieces when this mesh's largest leaf ball is more than
+    /// four times the other mesh's median one (a board against a detailed
+    /// model), and the whole triangles otherwise (a box against a box).
+    /// Pieces are certified like whole triangles, widened by their corners'
+    /// rounding (`proofs/09-ca-toi.md`, Lemma 9.5). Witnesses and
+    /// [`closest_triangles`](crate::ca::MeshPair::closest_triangles) name
+    /// the mesh's triangles.
+    ///
+    /// ```
+    /// use motion_bound::{scenes, BallTree};
+    /// let board = scenes::board::<f64>(2.0, 2.0, 0.002)?;
+    /// let cut = BallTree::try_with_piece_length(board.vertices(), board.triangles(), 0.05)?;
+    /// let whole = BallTree::try_with_piece_length(board.vertices(), board.triangles(), f64::INFINITY)?;
+    /// assert_eq!((cut.triangle_count(), whole.triangle_count()), (12, 12));
+    /// assert!(cut.piece_leaf_count() > 100 && whole.piece_leaf_count() == 0);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`try_new`](Self::try_new), and [`InputError::PieceLength`] for a
+    /// length that is NaN, zero or negative.
+    pub fn try_with_piece_length(
+        vertices: &[[T; 3]],
+        triangles: &[[u32; 3]],
+        length: f64,
+    ) -> Result<Self, InputError> {
+        if length.is_nan() || length <= 0.0 {
+            return Err(InputError::PieceLength);
+        }
+        let plan = PiecePlan {
+            length,
+            trigger: length,
+            budget: PIECE_BUDGET,
+        };
+        Self::try_build(vertices, triangles, &plan)
+    }
+
+    fn try_build(
+        vertices: &[[T; 3]],
+        triangles: &[[u32; 3]],
+        plan: &PiecePlan,
+    ) -> Result<Self, InputError> {
         if triangles.is_empty() {
             return Err(InputError::NoTriangles);
         }
@@ -107,24 +238,88 @@ impl<T: Float> BallTree<T> {
             leaves.push(Leaf {
                 corners,
                 r_hat: set.summary().max_radius(),
+                inflate: T::ZERO,
                 triangle: k as u32,
             });
         }
+        // The hierarchy of pieces: long triangles cut, the others whole.
+        let edges: Vec<f64> = leaves
+            .iter()
+            .map(|l| pieces::longest_edge(&l.corners.map(|c| c.map(T::to_f64))).0)
+            .collect();
+        let longest = edges.iter().copied().fold(0.0f64, f64::max);
+        let pieces = if longest > plan.trigger && plan.length > 0.0 {
+            // The finest length whose pieces fit in the budget.
+            let mut length = plan.length;
+            let fits = |length: f64| {
+                let mut left = plan.budget;
+                leaves.iter().zip(&edges).all(|(l, &e)| {
+                    e <= length || pieces::Cutter::new(l.corners, length).count_within(&mut left)
+                })
+            };
+            while length < longest && !fits(length) {
+                length *= core::f64::consts::SQRT_2;
+            }
+            let mut cut = Vec::new();
+            for (leaf, &e) in leaves.iter().zip(&edges) {
+                if e > length {
+                    pieces::Cutter::new(leaf.corners, length)
+                        .push_pieces(&mut cut, leaf.triangle)?;
+                } else {
+                    cut.push(*leaf);
+                }
+            }
+            Some(Hierarchy::try_new(cut, false)?)
+        } else {
+            None
+        };
+        let whole = Hierarchy::try_new(leaves, true)?;
+        let mut radii: Vec<f64> = whole
+            .nodes
+            .iter()
+            .filter(|n| n.leaf().is_some())
+            .map(|n| n.ball.radius().to_f64())
+            .collect();
+        radii.sort_by(f64::total_cmp);
+        Ok(Self {
+            leaf_max: radii.last().copied().unwrap_or(0.0),
+            leaf_median: radii.get(radii.len() / 2).copied().unwrap_or(0.0),
+            whole,
+            pieces,
+            triangles: triangles.len(),
+        })
+    }
+
+    /// The hierarchy a query of this mesh against `other` descends: the one
+    /// of pieces when this mesh has one and its largest leaf is more than
+    /// four times the other's median leaf, else the one of whole triangles.
+    pub(crate) fn against(&self, other: &Self) -> &Hierarchy<T> {
+        match &self.pieces {
+            Some(p) if self.leaf_max > PIECES_RATIO * other.leaf_median => p,
+            _ => &self.whole,
+        }
+    }
+}
+
+impl<T: Float> Hierarchy<T> {
+    /// The hierarchy over `leaves` (at least one). With `trials`, each split
+    /// takes the best of three keys by the children's box surface; without,
+    /// the first key (for the many small leaves of pieces: a faster build).
+    fn try_new(leaves: Vec<Leaf<T>>, trials: bool) -> Result<Self, InputError> {
         let mut order: Vec<u32> = (0..leaves.len() as u32).collect();
-        let mut tree = Self {
+        let mut h = Self {
             nodes: Vec::with_capacity(2 * leaves.len()),
             leaves: Vec::new(),
             depth: 0,
             reach: T::ZERO,
         };
-        tree.depth = tree.build(&leaves, &mut order, 1)?;
-        tree.leaves = leaves;
-        let reach = tree.nodes.iter().fold(T::ZERO, |m, n| {
+        h.depth = h.build(&leaves, &mut order, 1, trials)?;
+        h.leaves = leaves;
+        h.reach = h.nodes.iter().fold(T::ZERO, |m, n| {
             m.max_nan(n.obb.reach_up())
                 .max_nan(n.ball.outer_radius_up())
         });
-        tree.reach = reach;
-        Ok(tree)
+        Ok(h)
     }
 
     /// Appends the subtree over `order` and returns its depth.
@@ -133,9 +328,14 @@ impl<T: Float> BallTree<T> {
         leaves: &[Leaf<T>],
         order: &mut [u32],
         depth: usize,
+        trials: bool,
     ) -> Result<usize, InputError> {
         let index = self.nodes.len();
-        let (ball, obb) = enclosing_volumes(order.iter().map(|&l| &leaves[l as usize].corners))?;
+        let inflate = order
+            .iter()
+            .fold(T::ZERO, |m, &l| m.max_nan(leaves[l as usize].inflate));
+        let (ball, obb) =
+            enclosing_volumes(order.iter().map(|&l| &leaves[l as usize].corners), inflate)?;
         if let [only] = order {
             self.nodes.push(Node {
                 ball,
@@ -192,7 +392,7 @@ impl<T: Float> BallTree<T> {
         };
         let mid = order.len() / 2;
         let mut best = (f64::INFINITY, 0);
-        if order.len() >= 4 {
+        if trials && order.len() >= 4 {
             let mut trial = order.to_vec();
             for (k, key) in keys.iter().enumerate() {
                 trial.select_nth_unstable_by(mid, |x, y| by(*key, x, y));
@@ -213,14 +413,16 @@ impl<T: Float> BallTree<T> {
         order.select_nth_unstable_by(mid, |x, y| by(keys[best.1], x, y));
         let (left, right) = order.split_at_mut(mid);
         let left_index = self.nodes.len() as u32;
-        let dl = self.build(leaves, left, depth + 1)?;
+        let dl = self.build(leaves, left, depth + 1, trials)?;
         let right_index = self.nodes.len() as u32;
-        let dr = self.build(leaves, right, depth + 1)?;
+        let dr = self.build(leaves, right, depth + 1, trials)?;
         self.nodes[index].left = left_index;
         self.nodes[index].right = right_index;
         Ok(dl.max(dr))
     }
+}
 
+impl<T: Float> BallTree<T> {
     /// The hierarchy of a validated mesh (vertices relative to its rotation centre).
     ///
     /// # Errors
@@ -240,31 +442,45 @@ impl<T: Float> BallTree<T> {
     /// The root's ball: contains the whole mesh.
     #[must_use]
     pub fn root_ball(&self) -> &BoundingBall<T> {
-        &self.nodes[0].ball
+        &self.whole.nodes[0].ball
     }
 
-    /// The number of nodes (`2 N - 1` for `N` triangles).
+    /// The number of nodes of the hierarchy of whole triangles (`2 N - 1`
+    /// for `N` triangles).
     #[must_use]
     pub fn node_count(&self) -> usize {
-        self.nodes.len()
+        self.whole.nodes.len()
     }
 
-    /// The number of triangles (leaves).
+    /// The number of the mesh's triangles.
     #[must_use]
     pub fn triangle_count(&self) -> usize {
-        self.leaves.len()
+        self.triangles
     }
 
-    /// The length of the longest root-to-leaf path, in nodes.
+    /// The number of leaves of the hierarchy of pieces (the pieces, and
+    /// the triangles short enough to stay whole), or `0` when the mesh has
+    /// no triangle long enough to be cut
+    /// ([`try_with_piece_length`](Self::try_with_piece_length)).
+    #[must_use]
+    pub fn piece_leaf_count(&self) -> usize {
+        self.pieces.as_ref().map_or(0, |p| p.leaves.len())
+    }
+
+    /// The length of the longest root-to-leaf path of the hierarchy of
+    /// whole triangles, in nodes.
     #[must_use]
     pub fn depth(&self) -> usize {
-        self.depth
+        self.whole.depth
     }
 
     /// The rounded-up largest distance of a vertex from the rotation centre.
     #[must_use]
     pub fn max_radius(&self) -> T {
-        self.leaves.iter().fold(T::ZERO, |m, l| m.max_nan(l.r_hat))
+        self.whole
+            .leaves
+            .iter()
+            .fold(T::ZERO, |m, l| m.max_nan(l.r_hat))
     }
 }
 
@@ -311,11 +527,17 @@ fn normal_scatter<T: Float>(leaves: &[Leaf<T>], order: &[u32]) -> [[f64; 3]; 3] 
 
 /// The node's oriented box (`OrientedBox::fit`) and a ball centred at the
 /// box's centre holding every corner, its radius the largest corner distance
-/// rounded up (`rounding::offset_radius_up`).
+/// rounded up (`rounding::offset_radius_up`); both widened by `inflate`, the
+/// largest rounding of a piece's corners below the node (`0` for whole
+/// triangles: unchanged).
 fn enclosing_volumes<'a, T: Float + 'a>(
     tris: impl Iterator<Item = &'a [[T; 3]; 3]> + Clone,
+    inflate: T,
 ) -> Result<(BoundingBall<T>, OrientedBox<T>), InputError> {
-    let obb = OrientedBox::fit(tris.clone().flatten());
+    let mut obb = OrientedBox::fit(tris.clone().flatten());
+    if inflate > T::ZERO {
+        obb = obb.widened(inflate);
+    }
     let centre = obb.centre;
     let mut max_sq = T::ZERO;
     for tri in tris {
@@ -324,10 +546,13 @@ fn enclosing_volumes<'a, T: Float + 'a>(
             max_sq = max_sq.max_nan(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         }
     }
-    Ok((
-        BoundingBall::try_new(centre, offset_radius_up(max_sq))?,
-        obb,
-    ))
+    let radius = offset_radius_up(max_sq);
+    let radius = if inflate > T::ZERO {
+        add_up(radius, inflate)
+    } else {
+        radius
+    };
+    Ok((BoundingBall::try_new(centre, radius)?, obb))
 }
 
 #[cfg(test)]
@@ -355,7 +580,7 @@ mod tests {
             tree.depth()
         );
         // Every node's ball holds the corners of every leaf below it.
-        fn check(tree: &BallTree<f64>, node: usize) -> alloc::vec::Vec<usize> {
+        fn check(tree: &super::Hierarchy<f64>, node: usize) -> alloc::vec::Vec<usize> {
             let n = &tree.nodes[node];
             let below = match n.leaf() {
                 Some(l) => alloc::vec![l],
@@ -379,7 +604,7 @@ mod tests {
             }
             below
         }
-        let all = check(&tree, 0);
+        let all = check(&tree.whole, 0);
         assert_eq!(all.len(), 64, "every leaf reached once");
     }
 

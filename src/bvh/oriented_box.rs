@@ -111,6 +111,15 @@ impl<T: Float> OrientedBox<T> {
         }
     }
 
+    /// The box holding every point within `e` of this one's points: the
+    /// residual radius grows by `2 e` (rounded up), which covers `e |n|` for
+    /// a computed direction of length up to `1 + gamma_5`
+    /// (`proofs/floating-point.md`, "Pieces").
+    pub(crate) fn widened(mut self, e: T) -> Self {
+        self.rho = crate::rounding::add_up(self.rho, T::TWO * e);
+        self
+    }
+
     /// An upper bound of the box's support about its centre along the exact
     /// rotation of the direction whose computed body-frame image is `m`
     /// (`m = fl(R^T n)`, `R` the computed rotation by the angle `a`):

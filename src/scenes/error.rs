@@ -10,7 +10,7 @@ use crate::MeshError;
 pub enum SceneError {
     /// A count outside its documented range (segments and sides at least 3,
     /// their product at most `2^22`; `p`, `q` at least 1; icosphere
-    /// subdivisions at most 7).
+    /// subdivisions at most 7; board cells 1 to 1,024).
     Count {
         /// Which parameter.
         name: &'static str,

@@ -29,7 +29,7 @@ mod torus;
 
 pub use error::SceneError;
 pub use knot::{torus_knot, TorusKnot, TorusKnotSize};
-pub use solids::{board, cuboid, icosphere};
+pub use solids::{board, cuboid, icosphere, tessellated_board};
 pub use torus::torus;
 
 use alloc::vec::Vec;

@@ -60,6 +60,85 @@ pub fn board<T: Float>(width: f64, height: f64, thickness: f64) -> Result<TriMes
     cuboid([width, height, thickness])
 }
 
+/// The same thin board as [`board`], its two large faces cut into
+/// `cells x cells` grids of squares (two triangles each) and its rim into
+/// strips: `4 cells^2 + 8 cells` triangles, all small. The same solid as
+/// [`board`], for comparing a mesh of a few large triangles with a fine one.
+///
+/// # Errors
+/// As [`cuboid`], and [`SceneError::Count`] for no cell or more than 1,024
+/// cells a side.
+///
+/// ```
+/// use motion_bound::scenes::tessellated_board;
+/// let b = tessellated_board::<f64>(2.0, 2.0, 0.002, 8)?;
+/// assert_eq!(b.triangle_count(), 4 * 64 + 8 * 8);
+/// assert!((b.signed_volume() - 2.0 * 2.0 * 0.002).abs() < 1e-12);
+/// # Ok::<(), motion_bound::scenes::SceneError>(())
+/// ```
+pub fn tessellated_board<T: Float>(
+    width: f64,
+    height: f64,
+    thickness: f64,
+    cells: u32,
+) -> Result<TriMesh<T>, SceneError> {
+    let (w, h, z) = (
+        positive(width, "width")?,
+        positive(height, "height")?,
+        positive(thickness, "thickness")? / 2.0,
+    );
+    if cells == 0 || cells > 1024 {
+        return Err(SceneError::Count {
+            name: "cells",
+            value: cells,
+        });
+    }
+    let side_len = (cells + 1) * (cells + 1);
+    let idx = |side: u32, i: u32, j: u32| side * side_len + i * (cells + 1) + j;
+    let mut vertices = Vec::with_capacity(2 * side_len as usize);
+    let mut triangles = Vec::with_capacity((4 * cells * cells + 8 * cells) as usize);
+    for (side, zs) in [(0, z), (1, -z)] {
+        for i in 0..=cells {
+            for j in 0..=cells {
+                let x = w * (f64::from(i) / f64::from(cells) - 0.5);
+                let y = h * (f64::from(j) / f64::from(cells) - 0.5);
+                vertices.push(to_t(Vec3::new(x, y, zs)));
+            }
+        }
+        for i in 0..cells {
+            for j in 0..cells {
+                let (a, b, c, d) = (
+                    idx(side, i, j),
+                    idx(side, i + 1, j),
+                    idx(side, i + 1, j + 1),
+                    idx(side, i, j + 1),
+                );
+                if side == 0 {
+                    triangles.push([a, b, c]);
+                    triangles.push([a, c, d]);
+                } else {
+                    triangles.push([a, c, b]);
+                    triangles.push([a, d, c]);
+                }
+            }
+        }
+    }
+    // The rim: walk the grid's boundary counter-clockwise, joining top to bottom.
+    let mut rim = Vec::with_capacity(4 * cells as usize);
+    rim.extend((0..cells).map(|j| (0, j)));
+    rim.extend((0..cells).map(|i| (i, cells)));
+    rim.extend((1..=cells).rev().map(|j| (cells, j)));
+    rim.extend((1..=cells).rev().map(|i| (i, 0)));
+    for k in 0..rim.len() {
+        let (p, q) = (rim[k], rim[(k + 1) % rim.len()]);
+        let (a, b) = (idx(0, p.0, p.1), idx(0, q.0, q.1));
+        let (c, d) = (idx(1, p.0, p.1), idx(1, q.0, q.1));
+        triangles.push([a, d, c]);
+        triangles.push([a, b, d]);
+    }
+    Ok(TriMesh::try_new(vertices, triangles)?)
+}
+
 /// The geodesic sphere of `radius` about the origin: an icosahedron whose
 /// triangles are split in four `subdivisions` times, new vertices pushed out
 /// to the sphere; `20 x 4^s` triangles, `10 x 4^s + 2` vertices.

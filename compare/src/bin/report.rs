@@ -198,85 +198,8 @@ fn knot_scene(size: TorusKnotSize, queries: usize) -> ToiScene {
     }
 }
 
-/// A board of `w x h x thickness` whose two large faces are `cells x cells`
-/// grids (so its triangles are small), sides in strips.
-fn grid_board(w: f64, h: f64, thickness: f64, cells: u32) -> TriMesh<f64> {
-    let mut v = Vec::new();
-    let mut t = Vec::new();
-    let idx = |side: u32, i: u32, j: u32| side * (cells + 1) * (cells + 1) + i * (cells + 1) + j;
-    for side in 0..2 {
-        let z = if side == 0 {
-            thickness / 2.0
-        } else {
-            -thickness / 2.0
-        };
-        for i in 0..=cells {
-            for j in 0..=cells {
-                let x = w * (f64::from(i) / f64::from(cells) - 0.5);
-                let y = h * (f64::from(j) / f64::from(cells) - 0.5);
-                v.push([x, y, z]);
-            }
-        }
-        for i in 0..cells {
-            for j in 0..cells {
-                let (a, b, c, d) = (
-                    idx(side, i, j),
-                    idx(side, i + 1, j),
-                    idx(side, i + 1, j + 1),
-                    idx(side, i, j + 1),
-                );
-                if side == 0 {
-                    t.push([a, b, c]);
-                    t.push([a, c, d]);
-                } else {
-                    t.push([a, c, b]);
-                    t.push([a, d, c]);
-                }
-            }
-        }
-    }
-    // The rim: walk the boundary of the grid and join top to bottom.
-    let mut rim = Vec::new();
-    for j in 0..cells {
-        rim.push((0, j));
-    }
-    for i in 0..cells {
-        rim.push((i, cells));
-    }
-    for j in (1..=cells).rev() {
-        rim.push((cells, j));
-    }
-    for i in (1..=cells).rev() {
-        rim.push((i, 0));
-    }
-    for k in 0..rim.len() {
-        let (p, q) = (rim[k], rim[(k + 1) % rim.len()]);
-        let (a, b) = (idx(0, p.0, p.1), idx(0, q.0, q.1));
-        let (c, d) = (idx(1, p.0, p.1), idx(1, q.0, q.1));
-        t.push([a, c, d]);
-        t.push([a, d, b]);
-    }
-    TriMesh::try_new(v, t).expect("a valid board")
-}
-
 fn shipped(name: &str) -> TriMesh<f64> {
-    use std::io::Read;
-    let path = format!("{}/../data/{name}", env!("CARGO_MANIFEST_DIR"));
-    let file = std::fs::File::open(&path).unwrap_or_else(|e| panic!("{path}: {e}"));
-    let mut text = String::new();
-    flate2::read::GzDecoder::new(file)
-        .read_to_string(&mut text)
-        .unwrap_or_else(|e| panic!("{path}: {e}"));
-    let mesh = if name.ends_with(".off.gz") {
-        TriMesh::from_off_str(&text)
-    } else {
-        TriMesh::from_obj_str(&text)
-    }
-    .expect("a shipped mesh");
-    let (c, r) = mesh.bounding_sphere();
-    mesh.recentred(c)
-        .and_then(|m| m.scaled(0.5 / r))
-        .expect("valid")
+    motion_bound_compare::shipped_mesh(name)
 }
 
 fn with_tree(m: TriMesh<f64>) -> (TriMesh<f64>, BallTree<f64>) {
@@ -734,7 +657,7 @@ fn main() {
 
     pb.set_message("building scenes");
     let armadillo = shipped("armadillo.off.gz");
-    let board = grid_board(1.0, 1.0, 0.01, 40);
+    let board = motion_bound::scenes::tessellated_board(1.0, 1.0, 0.01, 40).expect("a valid board");
     let bunny = shipped("bunny-npm-3674.obj.gz");
     let mut scenes: Vec<ToiScene> = knot_sizes.iter().map(|&s| knot_scene(s, q)).collect();
     scenes.push(pair_scene(

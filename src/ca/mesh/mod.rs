@@ -17,7 +17,7 @@ use queue::{NodeStep, Pending, Queued};
 use seeds::Seeds;
 use traversal::{slab_gap, Placed, Rates};
 
-use crate::bvh::BallTree;
+use crate::bvh::{BallTree, Hierarchy};
 use crate::ca::{CaError, CaParams, CaStep, MeshParams, StepResult, Witness};
 use crate::rounding::{diff_up, gap_down, step_down};
 use crate::{Direction, Float, PreparedMotion};
@@ -46,8 +46,11 @@ use crate::{Direction, Float, PreparedMotion};
 /// knots). Any seeds are sound, so a pair may be reused across queries.
 #[derive(Debug)]
 pub struct MeshPair<'a, T> {
-    a: &'a BallTree<T>,
-    b: &'a BallTree<T>,
+    /// The hierarchies descended (`BallTree::against`).
+    a: &'a Hierarchy<T>,
+    b: &'a Hierarchy<T>,
+    /// Whether A's and B's hierarchies are those of pieces.
+    pieces: (bool, bool),
     /// The queue and the placed nodes: scratch space, reusable.
     ws: MeshWorkspace<T>,
     stats: TraversalStats,
@@ -63,9 +66,11 @@ impl<'a, T: Float> MeshPair<'a, T> {
     /// The pair of meshes `a` and `b` (each relative to its rotation centre).
     #[must_use]
     pub fn new(a: &'a BallTree<T>, b: &'a BallTree<T>) -> Self {
+        let (ha, hb) = (a.against(b), b.against(a));
         Self {
-            a,
-            b,
+            a: ha,
+            b: hb,
+            pieces: (!core::ptr::eq(ha, &a.whole), !core::ptr::eq(hb, &b.whole)),
             ws: MeshWorkspace::new(),
             stats: TraversalStats::default(),
             accept: MeshParams::<T>::default().accept_fraction,
@@ -124,6 +129,25 @@ impl<'a, T: Float> MeshPair<'a, T> {
     #[must_use]
     pub const fn closest_triangles(&self) -> Option<(u32, u32)> {
         self.closest
+    }
+
+    /// Whether the query descends A's and B's hierarchies of pieces (their
+    /// long triangles cut, [`BallTree::try_with_piece_length`]) rather than
+    /// their whole triangles: a mesh's pieces are taken when its largest
+    /// leaf ball is more than four times the other mesh's median one.
+    ///
+    /// ```
+    /// use motion_bound::ca::MeshPair;
+    /// use motion_bound::{scenes, BallTree};
+    /// let board = BallTree::try_from_mesh(&scenes::board::<f64>(2.0, 2.0, 0.002)?)?;
+    /// let ball = BallTree::try_from_mesh(&scenes::icosphere::<f64>(0.3, 3)?)?;
+    /// assert_eq!(MeshPair::new(&board, &ball).pieces_in_use(), (true, false));
+    /// assert_eq!(MeshPair::new(&board, &board).pieces_in_use(), (false, false));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    #[must_use]
+    pub const fn pieces_in_use(&self) -> (bool, bool) {
+        self.pieces
     }
 
     /// The work done since the pair was made or last reset.
@@ -209,7 +233,8 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 continue;
             }
             let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
-            if let (Some(li), Some(lj)) = (na.leaf(), nb.leaf()) {
+            let (leaf_a, leaf_b) = (na.leaf(), nb.leaf());
+            if let (Some(li), Some(lj)) = (leaf_a, leaf_b) {
                 if seed.contains((li as u32, lj as u32)) {
                     // Measured before the descent: its step is in `best`.
                     continue;
@@ -224,8 +249,8 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 if let Ok(n) = Direction::try_new(qb.centre - qa.centre) {
                     let g = gap_down(
                         slab_gap(&ta, &tb, n.get()),
-                        pa.err,
-                        pb.err,
+                        pa.leaf_err(la),
+                        pb.leaf_err(lb),
                         pa.reach + pb.reach,
                     );
                     if g > cd {
@@ -249,8 +274,8 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 continue;
             }
             // Descend into the larger ball (a leaf is never split).
-            let split_a = nb.leaf().is_some()
-                || (na.leaf().is_none() && na.ball.radius() >= nb.ball.radius());
+            let split_a =
+                leaf_b.is_some() || (leaf_a.is_none() && na.ball.radius() >= nb.ball.radius());
             let (left, right) = if split_a {
                 (na.left, na.right)
             } else {

@@ -4,11 +4,13 @@
 
 use super::queue::NodeStep;
 use super::MeshPair;
-use crate::bvh::{BallTree, Leaf};
+use crate::bvh::{Hierarchy, Leaf};
 use crate::ca::driver::{gap_step, placement_error};
 use crate::ca::{StepResult, Witness};
 use crate::geometry::closest::triangle_triangle_vec;
-use crate::rounding::{crude_speed_up, gap_down, lever_up, step_down, BoxError};
+use crate::rounding::{
+    add_up, crude_speed_up, gap_down, lever_up, piece_speed_margin_up, step_down, BoxError,
+};
 use crate::{BoundKind, BoundingBall, Direction, Float, Point3, Pose, PreparedMotion, Vec3};
 
 /// What one body contributes at the current time.
@@ -40,7 +42,7 @@ impl<'p, T: Float> Placed<'p, T> {
     /// its pose, and the placement error and reach covering every node
     /// centre, box point and corner (all within the tree's certified reach
     /// of the body origin).
-    pub(super) fn new(tree: &BallTree<T>, motion: &'p PreparedMotion<T>, t: T) -> Self {
+    pub(super) fn new(tree: &Hierarchy<T>, motion: &'p PreparedMotion<T>, t: T) -> Self {
         let m = motion.motion();
         let (err, reach) = placement_error(m, t, tree.reach);
         Self {
@@ -55,7 +57,7 @@ impl<'p, T: Float> Placed<'p, T> {
         }
     }
 
-    pub(super) fn place(&self, tree: &BallTree<T>, node: u32) -> PlacedNode<T> {
+    pub(super) fn place(&self, tree: &Hierarchy<T>, node: u32) -> PlacedNode<T> {
         let n = &tree.nodes[node as usize];
         let thin = self.pose.transform_vector(Vec3::from_array(n.obb.axes[2]));
         PlacedNode {
@@ -75,7 +77,7 @@ impl<'p, T: Float> Placed<'p, T> {
         crude_speed_up(self.v_l1, self.w_l1, lever_up(radius, self.lever_extra))
     }
 
-    fn centre(&self, tree: &BallTree<T>, node: u32) -> Vec3<T> {
+    fn centre(&self, tree: &Hierarchy<T>, node: u32) -> Vec3<T> {
         self.pose
             .transform_point(Vec3::from_array(*tree.nodes[node as usize].ball.centre()))
     }
@@ -85,19 +87,44 @@ impl<'p, T: Float> Placed<'p, T> {
             .map(|c| self.pose.transform_point(Vec3::from_array(c)))
     }
 
+    /// The placement error of a leaf's points: the body's, plus a piece's
+    /// corner rounding (Lemma 9.5).
+    #[inline]
+    pub(super) fn leaf_err(&self, leaf: &Leaf<T>) -> T {
+        if leaf.inflate > T::ZERO {
+            add_up(self.err, leaf.inflate)
+        } else {
+            self.err
+        }
+    }
+
+    /// A bound over the computed corners, widened for a piece to cover
+    /// every point within its rounding of them (Lemma 9.5).
+    #[inline]
+    fn widened(&self, leaf: &Leaf<T>, bound: T) -> T {
+        if leaf.inflate > T::ZERO {
+            add_up(bound, piece_speed_margin_up(self.w_l1, leaf.inflate))
+        } else {
+            bound
+        }
+    }
+
     fn leaf_speed(&self, leaf: &Leaf<T>, n: Direction<T>, kind: BoundKind) -> T {
         let probe = self.motion.probe(n);
-        match kind {
+        let speed = match kind {
             BoundKind::Nevq => probe.nevq_speed_radius(leaf.r_hat),
             _ => probe.evq_speed_points(&leaf.corners, leaf.r_hat),
-        }
+        };
+        self.widened(leaf, speed)
     }
 
     /// The one-sided rate of a leaf's corners along `n`.
     fn leaf_rate(&self, leaf: &Leaf<T>, n: Direction<T>, kind: BoundKind) -> T {
-        self.motion
+        let rate = self
+            .motion
             .probe(n)
-            .points_rate(&leaf.corners, leaf.r_hat, kind)
+            .points_rate(&leaf.corners, leaf.r_hat, kind);
+        self.widened(leaf, rate)
     }
 }
 
@@ -267,7 +294,8 @@ impl<T: Float> MeshPair<'_, T> {
         self.stats.bounds += 2;
         let mu = rates.leaves(pa, pb, (la, lb), n);
         let gap = slab_gap(ta, tb, nv);
-        let (step, _) = gap_step(gap, clearance, (pa.err, pb.err), (pa.reach, pb.reach), mu);
+        let err = (pa.leaf_err(la), pb.leaf_err(lb));
+        let (step, _) = gap_step(gap, clearance, err, (pa.reach, pb.reach), mu);
         self.seeds.insert(step.to_f64(), (i as u32, j as u32));
         if step < *best {
             *best = step;
