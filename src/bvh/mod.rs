@@ -126,13 +126,16 @@ pub(crate) struct Hierarchy<T> {
 /// ([`try_with_piece_length`](Self::try_with_piece_length)); a query takes
 /// it against a mesh of much smaller triangles. That hierarchy splits at the
 /// median of one key (centroids along the widest axis): about 46 ms for
-/// the 13,768 pieces of a 12-triangle board here.
+/// the 13,768 pieces of a 12-triangle board here, paid by the first query
+/// that takes it (with `std`; without, when the tree is built).
 #[derive(Clone, Debug)]
 pub struct BallTree<T> {
     /// Every triangle whole.
     pub(crate) whole: Hierarchy<T>,
-    /// Long triangles cut into pieces, when the mesh has any.
-    pub(crate) pieces: Option<Hierarchy<T>>,
+    /// Long triangles cut into pieces (`pieces()`), when the mesh has any.
+    pieces: PieceCell<T>,
+    /// The pieces' finest length and budget, when the mesh has pieces.
+    piece_plan: Option<(f64, usize)>,
     triangles: usize,
     /// The largest and the median leaf ball radius of `whole`.
     leaf_max: f64,
@@ -242,37 +245,14 @@ impl<T: Float> BallTree<T> {
                 triangle: k as u32,
             });
         }
-        // The hierarchy of pieces: long triangles cut, the others whole.
-        let edges: Vec<f64> = leaves
+        // The hierarchy of pieces exists when some triangle is long enough;
+        // it is built on first use (with `std`) or now.
+        let longest = leaves
             .iter()
             .map(|l| pieces::longest_edge(&l.corners.map(|c| c.map(T::to_f64))).0)
-            .collect();
-        let longest = edges.iter().copied().fold(0.0f64, f64::max);
-        let pieces = if longest > plan.trigger && plan.length > 0.0 {
-            // The finest length whose pieces fit in the budget.
-            let mut length = plan.length;
-            let fits = |length: f64| {
-                let mut left = plan.budget;
-                leaves.iter().zip(&edges).all(|(l, &e)| {
-                    e <= length || pieces::Cutter::new(l.corners, length).count_within(&mut left)
-                })
-            };
-            while length < longest && !fits(length) {
-                length *= core::f64::consts::SQRT_2;
-            }
-            let mut cut = Vec::new();
-            for (leaf, &e) in leaves.iter().zip(&edges) {
-                if e > length {
-                    pieces::Cutter::new(leaf.corners, length)
-                        .push_pieces(&mut cut, leaf.triangle)?;
-                } else {
-                    cut.push(*leaf);
-                }
-            }
-            Some(Hierarchy::try_new(cut, false)?)
-        } else {
-            None
-        };
+            .fold(0.0f64, f64::max);
+        let piece_plan =
+            (longest > plan.trigger && plan.length > 0.0).then_some((plan.length, plan.budget));
         let whole = Hierarchy::try_new(leaves, true)?;
         let mut radii: Vec<f64> = whole
             .nodes
@@ -284,20 +264,29 @@ impl<T: Float> BallTree<T> {
         Ok(Self {
             leaf_max: radii.last().copied().unwrap_or(0.0),
             leaf_median: radii.get(radii.len() / 2).copied().unwrap_or(0.0),
+            pieces: PieceCell::new(leaves_of(&whole), piece_plan),
+            piece_plan,
             whole,
-            pieces,
             triangles: triangles.len(),
         })
+    }
+
+    /// The hierarchy of pieces, built on first use, or `None` when the mesh
+    /// has no triangle long enough.
+    fn pieces(&self) -> Option<&Hierarchy<T>> {
+        self.pieces.get(&self.whole.leaves, self.piece_plan)
     }
 
     /// The hierarchy a query of this mesh against `other` descends: the one
     /// of pieces when this mesh has one and its largest leaf is more than
     /// four times the other's median leaf, else the one of whole triangles.
     pub(crate) fn against(&self, other: &Self) -> &Hierarchy<T> {
-        match &self.pieces {
-            Some(p) if self.leaf_max > PIECES_RATIO * other.leaf_median => p,
-            _ => &self.whole,
+        if self.piece_plan.is_some() && self.leaf_max > PIECES_RATIO * other.leaf_median {
+            if let Some(p) = self.pieces() {
+                return p;
+            }
         }
+        &self.whole
     }
 }
 
@@ -459,12 +448,12 @@ impl<T: Float> BallTree<T> {
     }
 
     /// The number of leaves of the hierarchy of pieces (the pieces, and
-    /// the triangles short enough to stay whole), or `0` when the mesh has
-    /// no triangle long enough to be cut
+    /// the triangles short enough to stay whole; built now if not yet), or
+    /// `0` when the mesh has no triangle long enough to be cut
     /// ([`try_with_piece_length`](Self::try_with_piece_length)).
     #[must_use]
     pub fn piece_leaf_count(&self) -> usize {
-        self.pieces.as_ref().map_or(0, |p| p.leaves.len())
+        self.pieces().map_or(0, |p| p.leaves.len())
     }
 
     /// The length of the longest root-to-leaf path of the hierarchy of
@@ -481,6 +470,88 @@ impl<T: Float> BallTree<T> {
             .leaves
             .iter()
             .fold(T::ZERO, |m, l| m.max_nan(l.r_hat))
+    }
+}
+
+/// The leaves of `h` (a helper for the eager build without `std`).
+fn leaves_of<T>(h: &Hierarchy<T>) -> &[Leaf<T>] {
+    &h.leaves
+}
+
+/// The hierarchy of pieces of `leaves` (the whole triangles, in the mesh's
+/// order): the finest length from `length` up by factors `sqrt 2` whose
+/// pieces fit in `budget`; every triangle longer than it cut, the others
+/// whole. `None` if a piece's corners were out of range (never for a valid
+/// mesh: they lie in its triangles' hulls); the whole triangles then serve.
+fn build_pieces<T: Float>(
+    leaves: &[Leaf<T>],
+    (length, budget): (f64, usize),
+) -> Option<Hierarchy<T>> {
+    let edges: Vec<f64> = leaves
+        .iter()
+        .map(|l| pieces::longest_edge(&l.corners.map(|c| c.map(T::to_f64))).0)
+        .collect();
+    let longest = edges.iter().copied().fold(0.0f64, f64::max);
+    let fits = |length: f64| {
+        let mut left = budget;
+        leaves.iter().zip(&edges).all(|(l, &e)| {
+            e <= length || pieces::Cutter::new(l.corners, length).count_within(&mut left)
+        })
+    };
+    let mut length = length;
+    while length < longest && !fits(length) {
+        length *= core::f64::consts::SQRT_2;
+    }
+    let mut cut = Vec::new();
+    for (leaf, &e) in leaves.iter().zip(&edges) {
+        if e > length {
+            pieces::Cutter::new(leaf.corners, length)
+                .push_pieces(&mut cut, leaf.triangle)
+                .ok()?;
+        } else {
+            cut.push(*leaf);
+        }
+    }
+    Hierarchy::try_new(cut, false).ok()
+}
+
+/// Where a tree keeps its hierarchy of pieces: built on first use with
+/// `std` (a `OnceLock`, so that trees stay `Sync` and a mesh never paired
+/// with a much finer one never pays for it), eagerly without.
+#[derive(Clone, Debug)]
+struct PieceCell<T> {
+    #[cfg(feature = "std")]
+    cell: std::sync::OnceLock<Option<Hierarchy<T>>>,
+    #[cfg(not(feature = "std"))]
+    built: Option<Hierarchy<T>>,
+}
+
+impl<T: Float> PieceCell<T> {
+    #[cfg(feature = "std")]
+    fn new(_leaves: &[Leaf<T>], _plan: Option<(f64, usize)>) -> Self {
+        Self {
+            cell: std::sync::OnceLock::new(),
+        }
+    }
+
+    #[cfg(not(feature = "std"))]
+    fn new(leaves: &[Leaf<T>], plan: Option<(f64, usize)>) -> Self {
+        Self {
+            built: plan.and_then(|p| build_pieces(leaves, p)),
+        }
+    }
+
+    #[cfg(feature = "std")]
+    fn get(&self, leaves: &[Leaf<T>], plan: Option<(f64, usize)>) -> Option<&Hierarchy<T>> {
+        let plan = plan?;
+        self.cell
+            .get_or_init(|| build_pieces(leaves, plan))
+            .as_ref()
+    }
+
+    #[cfg(not(feature = "std"))]
+    fn get(&self, _leaves: &[Leaf<T>], _plan: Option<(f64, usize)>) -> Option<&Hierarchy<T>> {
+        self.built.as_ref()
     }
 }
 
