@@ -120,9 +120,9 @@ pub(crate) struct Hierarchy<T> {
 /// normals along their principal axis) gives the children the smallest total
 /// box surface. `O(N log^2 N)`: about 0.5 s for 34K triangles here.
 ///
-/// A mesh with triangles much longer than its size scale (more than a
-/// quarter of its reach, as a board's or a box's) also gets a second
-/// hierarchy in which those triangles are cut into pieces
+/// A mesh with a triangle much longer than its size scale (an edge over
+/// half its reach, as a board's or a box's) also gets a second hierarchy in
+/// which its long triangles are cut into pieces
 /// ([`try_with_piece_length`](Self::try_with_piece_length)); a query takes
 /// it against a mesh of much smaller triangles. That hierarchy splits at the
 /// median of one key (centroids along the widest axis): about 46 ms for
@@ -144,8 +144,11 @@ pub struct BallTree<T> {
 
 impl<T: Float> BallTree<T> {
     /// Builds the hierarchy of `triangles` (indices into `vertices`), with
-    /// pieces of `1/32` of the mesh's reach (its largest vertex distance
-    /// from the rotation centre) for triangles longer than a quarter of it ([`try_with_piece_length`](Self::try_with_piece_length)).
+    /// a hierarchy of pieces when its longest edge exceeds half the mesh's
+    /// reach (its largest vertex distance from the rotation centre): every
+    /// triangle longer than `1/32` of the reach cut to that length, within
+    /// a budget of `max(16,384, 4 N)` pieces (the length coarsened until they
+    /// fit). See [`try_with_piece_length`](Self::try_with_piece_length).
     ///
     /// # Errors
     /// [`InputError::NoTriangles`] when there is no triangle,
@@ -171,11 +174,11 @@ impl<T: Float> BallTree<T> {
     }
 
     /// Builds the hierarchy with pieces of length `length`: when a triangle's
-    /// longest edge exceeds 8 times `length`, the tree gets a second
-    /// hierarchy in which every such triangle is cut into pieces whose edges
-    /// are at most `length` (by longest-edge bisection; at most 4,096 pieces
-    /// a triangle and 65,536 for the mesh, triangles past the budget staying
-    /// whole). `f64::INFINITY` makes no pieces.
+    /// longest edge exceeds `length`, the tree gets a second hierarchy in
+    /// which every such triangle is cut into pieces whose edges are at most
+    /// `length` (by longest-edge bisection, at most 4,096 pieces a triangle;
+    /// if the mesh's pieces would exceed 65,536, the length grows by factors
+    /// `sqrt 2` until they fit). `f64::INFINITY` makes no pieces.
     ///
     /// A large triangle as one leaf has one volume and one ball, whose
     /// directed bound is that of its farthest point, against every node of
