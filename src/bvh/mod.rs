@@ -267,7 +267,7 @@ impl<T: Float> BallTree<T> {
         Ok(Self {
             leaf_max: radii.last().copied().unwrap_or(0.0),
             leaf_median: radii.get(radii.len() / 2).copied().unwrap_or(0.0),
-            pieces: PieceCell::new(leaves_of(&whole), piece_plan),
+            pieces: PieceCell::new(&whole.leaves, piece_plan),
             piece_plan,
             whole,
             triangles: triangles.len(),
@@ -474,11 +474,6 @@ impl<T: Float> BallTree<T> {
             .iter()
             .fold(T::ZERO, |m, l| m.max_nan(l.r_hat))
     }
-}
-
-/// The leaves of `h` (a helper for the eager build without `std`).
-fn leaves_of<T>(h: &Hierarchy<T>) -> &[Leaf<T>] {
-    &h.leaves
 }
 
 /// The hierarchy of pieces of `leaves` (the whole triangles, in the mesh's

@@ -71,9 +71,9 @@ impl<T: Float> Cutter<T> {
         }
     }
 
-    /// Whether the bisection's pieces number at most `left`, taking them
-    /// from it (a dry run of [`split`](Self::split), stopped once over).
-    pub(crate) fn count_within(&self, left: &mut usize) -> bool {
+    /// Visits every piece of the bisection, depth first, until `visit`
+    /// fails.
+    fn walk<E>(&self, mut visit: impl FnMut(&[Weights; 3]) -> Result<(), E>) -> Result<(), E> {
         let mut stack = alloc::vec![(WHOLE, 0u32)];
         while let Some((ws, level)) = stack.pop() {
             match self.split(&ws, level) {
@@ -81,11 +81,20 @@ impl<T: Float> Cutter<T> {
                     stack.push((second, level + 1));
                     stack.push((first, level + 1));
                 }
-                None if *left == 0 => return false,
-                None => *left -= 1,
+                None => visit(&ws)?,
             }
         }
-        true
+        Ok(())
+    }
+
+    /// Whether the bisection's pieces number at most `left`, taking them
+    /// from it (a dry run, stopped once over).
+    pub(crate) fn count_within(&self, left: &mut usize) -> bool {
+        self.walk(|_| -> Result<(), ()> {
+            *left = left.checked_sub(1).ok_or(())?;
+            Ok(())
+        })
+        .is_ok()
     }
 
     /// The two halves of the piece `ws` at `level`, or `None` when it is
@@ -131,17 +140,10 @@ impl<T: Float> Cutter<T> {
         out: &mut Vec<Leaf<T>>,
         triangle: u32,
     ) -> Result<(), InputError> {
-        let mut stack = alloc::vec![(WHOLE, 0u32)];
-        while let Some((ws, level)) = stack.pop() {
-            match self.split(&ws, level) {
-                Some((first, second)) => {
-                    stack.push((second, level + 1));
-                    stack.push((first, level + 1));
-                }
-                None => out.push(self.leaf(&ws, triangle)?),
-            }
-        }
-        Ok(())
+        self.walk(|ws| {
+            out.push(self.leaf(ws, triangle)?);
+            Ok(())
+        })
     }
 
     /// The leaf of piece `ws` of triangle `triangle`.
