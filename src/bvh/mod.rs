@@ -134,8 +134,6 @@ pub struct BallTree<T> {
     pub(crate) whole: Hierarchy<T>,
     /// Long triangles cut into pieces (`pieces()`), when the mesh has any.
     pieces: PieceCell<T>,
-    /// The pieces' finest length and budget, when the mesh has pieces.
-    piece_plan: Option<(f64, usize)>,
     triangles: usize,
     /// The largest and the median leaf ball radius of `whole`.
     leaf_max: f64,
@@ -268,7 +266,6 @@ impl<T: Float> BallTree<T> {
             leaf_max: radii.last().copied().unwrap_or(0.0),
             leaf_median: radii.get(radii.len() / 2).copied().unwrap_or(0.0),
             pieces: PieceCell::new(&whole.leaves, piece_plan),
-            piece_plan,
             whole,
             triangles: triangles.len(),
         })
@@ -277,14 +274,14 @@ impl<T: Float> BallTree<T> {
     /// The hierarchy of pieces, built on first use, or `None` when the mesh
     /// has no triangle long enough.
     fn pieces(&self) -> Option<&Hierarchy<T>> {
-        self.pieces.get(&self.whole.leaves, self.piece_plan)
+        self.pieces.get(&self.whole.leaves)
     }
 
     /// The hierarchy a query of this mesh against `other` descends: the one
     /// of pieces when this mesh has one and its largest leaf is more than
     /// four times the other's median leaf, else the one of whole triangles.
     pub(crate) fn against(&self, other: &Self) -> &Hierarchy<T> {
-        if self.piece_plan.is_some() && self.leaf_max > PIECES_RATIO * other.leaf_median {
+        if self.pieces.plan.is_some() && self.leaf_max > PIECES_RATIO * other.leaf_median {
             if let Some(p) = self.pieces() {
                 return p;
             }
@@ -513,11 +510,14 @@ fn build_pieces<T: Float>(
     Hierarchy::try_new(cut, false).ok()
 }
 
-/// Where a tree keeps its hierarchy of pieces: built on first use with
-/// `std` (a `OnceLock`, so that trees stay `Sync` and a mesh never paired
-/// with a much finer one never pays for it), eagerly without.
+/// Where a tree keeps its hierarchy of pieces and how to make it (the
+/// finest length and the budget; `None` when the mesh has no triangle long
+/// enough): built on first use with `std` (a `OnceLock`, so that trees stay
+/// `Sync` and a mesh never paired with a much finer one never pays for it),
+/// eagerly without.
 #[derive(Clone, Debug)]
 struct PieceCell<T> {
+    plan: Option<(f64, usize)>,
     #[cfg(feature = "std")]
     cell: std::sync::OnceLock<Option<Hierarchy<T>>>,
     #[cfg(not(feature = "std"))]
@@ -526,8 +526,9 @@ struct PieceCell<T> {
 
 impl<T: Float> PieceCell<T> {
     #[cfg(feature = "std")]
-    fn new(_leaves: &[Leaf<T>], _plan: Option<(f64, usize)>) -> Self {
+    fn new(_leaves: &[Leaf<T>], plan: Option<(f64, usize)>) -> Self {
         Self {
+            plan,
             cell: std::sync::OnceLock::new(),
         }
     }
@@ -535,20 +536,23 @@ impl<T: Float> PieceCell<T> {
     #[cfg(not(feature = "std"))]
     fn new(leaves: &[Leaf<T>], plan: Option<(f64, usize)>) -> Self {
         Self {
+            plan,
             built: plan.and_then(|p| build_pieces(leaves, p)),
         }
     }
 
+    /// The hierarchy of pieces of the whole triangles `leaves`, if planned.
     #[cfg(feature = "std")]
-    fn get(&self, leaves: &[Leaf<T>], plan: Option<(f64, usize)>) -> Option<&Hierarchy<T>> {
-        let plan = plan?;
+    fn get(&self, leaves: &[Leaf<T>]) -> Option<&Hierarchy<T>> {
+        let plan = self.plan?;
         self.cell
             .get_or_init(|| build_pieces(leaves, plan))
             .as_ref()
     }
 
+    /// The hierarchy of pieces, if planned.
     #[cfg(not(feature = "std"))]
-    fn get(&self, _leaves: &[Leaf<T>], _plan: Option<(f64, usize)>) -> Option<&Hierarchy<T>> {
+    fn get(&self, _leaves: &[Leaf<T>]) -> Option<&Hierarchy<T>> {
         self.built.as_ref()
     }
 }
