@@ -26,8 +26,9 @@ use crate::{Direction, Float, PreparedMotion};
 /// [`CaStep`]): one step is a simultaneous descent of both ball trees.
 ///
 /// For a node pair placed at time `t`, the gap `g` between the nodes'
-/// oriented boxes (or balls) is measured along three directions, the line
-/// joining their centres and each box's thinnest axis, and the largest is
+/// oriented boxes (or balls) is measured along two directions, the line
+/// joining their centres and the line joining the nearest points of the
+/// boxes' middle rectangles (found approximately), and the larger is
 /// kept with its direction `n`; the slab between the nodes closes at most at
 /// `mu_a + mu_b`, the balls' directed bounds (`O(1)` each; by default the
 /// one-sided rates of A along `n` and of B along `-n`,

@@ -28,13 +28,50 @@ pub(super) struct Placed<'p, T> {
     pub(super) w_l1: T,
 }
 
-/// A node placed at the current step: its centre, and its box's thinnest
-/// axis in the world frame (normalised), computed once per node per pair
-/// creation and shared by the pair's children.
+/// A node placed at the current step: its centre, and its box's two long
+/// axes in the world frame with their half extents (the box's middle
+/// rectangle), computed once per node per pair creation and shared by the
+/// pair's children.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct PlacedNode<T> {
     pub(super) centre: Vec3<T>,
-    thin: Option<Direction<T>>,
+    long: [Vec3<T>; 2],
+    half: [T; 2],
+}
+
+impl<T: Float> PlacedNode<T> {
+    /// The point of the node's middle rectangle nearest `p` (exactly so in
+    /// exact arithmetic for orthonormal axes; otherwise some point near the
+    /// rectangle, which is all its one use needs).
+    #[inline]
+    fn nearest(&self, p: Vec3<T>) -> Vec3<T> {
+        let x = p - self.centre;
+        let s0 = x
+            .dot(self.long[0])
+            .max_nan(-self.half[0])
+            .min_nan(self.half[0]);
+        let s1 = x
+            .dot(self.long[1])
+            .max_nan(-self.half[1])
+            .min_nan(self.half[1]);
+        self.centre + self.long[0] * s0 + self.long[1] * s1
+    }
+}
+
+/// A direction from A's node to B's close to the one joining the nearest
+/// points of their boxes' middle rectangles: three alternating projections
+/// from B's centre (A's rectangle, B's, A's again), the rectangle swept
+/// spheres' distance direction (PQP, C2A) without its case analysis. Only a
+/// choice of direction: the gap along it is certified by the boxes'
+/// supports whatever it is (Lemma 9.1 holds for any direction), so neither
+/// the projections nor their rounding need any bound. `None` when the
+/// points coincide (the rectangles meet) or the difference is not finite.
+#[inline]
+fn near_points_direction<T: Float>(qa: &PlacedNode<T>, qb: &PlacedNode<T>) -> Option<Direction<T>> {
+    let p_a = qa.nearest(qb.centre);
+    let p_b = qb.nearest(p_a);
+    let p_a = qa.nearest(p_b);
+    Direction::try_new_fast(p_b - p_a).ok()
 }
 
 impl<'p, T: Float> Placed<'p, T> {
@@ -59,10 +96,11 @@ impl<'p, T: Float> Placed<'p, T> {
 
     pub(super) fn place(&self, tree: &Hierarchy<T>, node: u32) -> PlacedNode<T> {
         let n = &tree.nodes[node as usize];
-        let thin = self.pose.transform_vector(Vec3::from_array(n.obb.axes[2]));
+        let axis = |k: usize| self.pose.transform_vector(Vec3::from_array(n.obb.axes[k]));
         PlacedNode {
             centre: self.centre(tree, node),
-            thin: Direction::try_new_fast(thin).ok(),
+            long: [axis(0), axis(1)],
+            half: [n.obb.half[0], n.obb.half[1]],
         }
     }
 
@@ -181,10 +219,11 @@ impl Rates {
 }
 
 impl<T: Float> MeshPair<'_, T> {
-    /// The safe step of a node pair (Lemma 9.1): the largest gap between
-    /// the placed nodes along one of three directions (the line joining the
-    /// box centres, where the balls' gap counts too, and each box's thinnest
-    /// axis), over the balls' directed bounds along it.
+    /// The safe step of a node pair (Lemma 9.1): the larger gap between the
+    /// placed nodes along two directions (the line joining the box centres,
+    /// where the balls' gap counts too, and the direction between the
+    /// nearest points of the boxes' middle rectangles,
+    /// `near_points_direction`), over the balls' directed bounds along it.
     ///
     /// A pair whose certified gap is at most the contact distance (or that
     /// no direction separates) is a [`NodeStep::Near`] candidate: triangles
@@ -223,7 +262,7 @@ impl<T: Float> MeshPair<'_, T> {
             let ball_gap = d.dot(n.get()) - na.ball.radius() - nb.ball.radius();
             consider(n, ball_gap.max_nan(box_gap(n.get())));
         }
-        for n in [qa.thin, qb.thin].into_iter().flatten() {
+        if let Some(n) = near_points_direction(&qa, &qb) {
             consider(n, box_gap(n.get()));
         }
         let Some((gap, n)) = best else {
@@ -311,4 +350,130 @@ pub(super) fn slab_gap<T: Float>(ta: &[Vec3<T>; 3], tb: &[Vec3<T>; 3], n: Vec3<T
     let lo_b = tb[0].dot(n).min_nan(tb[1].dot(n)).min_nan(tb[2].dot(n));
     let hi_a = ta[0].dot(n).max_nan(ta[1].dot(n)).max_nan(ta[2].dot(n));
     lo_b - hi_a
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{near_points_direction, PlacedNode};
+    use crate::geometry::closest::triangle_triangle_vec;
+    use crate::Vec3;
+
+    /// A small deterministic source (SplitMix64), uniform in `[lo, hi)`.
+    struct Draw(u64);
+    impl Draw {
+        fn range(&mut self, lo: f64, hi: f64) -> f64 {
+            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let mut z = self.0;
+            z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            z ^= z >> 31;
+            lo + (hi - lo) * ((z >> 11) as f64 / (1u64 << 53) as f64)
+        }
+        fn vec(&mut self) -> Vec3<f64> {
+            Vec3::new(
+                self.range(-1.0, 1.0),
+                self.range(-1.0, 1.0),
+                self.range(-1.0, 1.0),
+            )
+        }
+        /// A random rectangle: centre, orthonormal long axes, half extents.
+        fn rectangle(&mut self, centre: Vec3<f64>) -> PlacedNode<f64> {
+            let u = self.vec();
+            let u = u * (1.0 / u.length());
+            let w = self.vec();
+            let w = w - u * w.dot(u);
+            let w = w * (1.0 / w.length());
+            PlacedNode {
+                centre,
+                long: [u, w],
+                half: [self.range(0.02, 1.0), self.range(0.0, 0.5)],
+            }
+        }
+    }
+
+    fn corners(q: &PlacedNode<f64>) -> [Vec3<f64>; 4] {
+        let (a, b) = (q.long[0] * q.half[0], q.long[1] * q.half[1]);
+        [
+            q.centre + a + b,
+            q.centre + a - b,
+            q.centre - a - b,
+            q.centre - a + b,
+        ]
+    }
+
+    /// The gap along `n` of the slab between the rectangles (corners).
+    fn slab(qa: &PlacedNode<f64>, qb: &PlacedNode<f64>, n: Vec3<f64>) -> f64 {
+        let (ca, cb) = (corners(qa), corners(qb));
+        let s = if (qb.centre - qa.centre).dot(n) < 0.0 {
+            -1.0
+        } else {
+            1.0
+        };
+        let lo_b = cb
+            .iter()
+            .map(|p| s * p.dot(n))
+            .fold(f64::INFINITY, f64::min);
+        let hi_a = ca
+            .iter()
+            .map(|p| s * p.dot(n))
+            .fold(-f64::INFINITY, f64::max);
+        lo_b - hi_a
+    }
+
+    /// The rectangles' distance, independently: the least of the exact
+    /// distances of their triangles (two each).
+    fn distance(qa: &PlacedNode<f64>, qb: &PlacedNode<f64>) -> f64 {
+        let (a, b) = (corners(qa), corners(qb));
+        let tris = |c: [Vec3<f64>; 4]| [[c[0], c[1], c[2]], [c[0], c[2], c[3]]];
+        let mut d = f64::INFINITY;
+        for ta in &tris(a) {
+            for tb in &tris(b) {
+                d = d.min(triangle_triangle_vec(ta, tb).distance);
+            }
+        }
+        d
+    }
+
+    /// The slab gap along `near_points_direction` against the rectangles'
+    /// exact distance (from the exact triangle distances), beside the gap
+    /// along the centre line.
+    #[test]
+    fn the_near_points_direction_finds_most_of_the_rectangles_distance() {
+        let mut draw = Draw(20_261_202);
+        let (mut n, mut sum_np, mut sum_cl, mut within) = (0, 0.0, 0.0, 0);
+        let mut worst = f64::INFINITY;
+        // Rectangles of sizes up to 2 x 1 with centres 0.3 to 3 apart, at
+        // least 1e-3 apart: the centre line is a poor direction for most.
+        while n < 2000 {
+            let qa = draw.rectangle(Vec3::ZERO);
+            let at = draw.vec();
+            let r = draw.range(0.3, 3.0);
+            let qb = draw.rectangle(at * (r / at.length()));
+            let d = distance(&qa, &qb);
+            if d < 1e-3 {
+                continue;
+            }
+            n += 1;
+            let dir = near_points_direction(&qa, &qb).expect("apart rectangles");
+            let np = slab(&qa, &qb, dir.get()) / d;
+            let line = qb.centre - qa.centre;
+            let cl = slab(&qa, &qb, line * (1.0 / line.length())) / d;
+            assert!(
+                np <= 1.0 + 1e-9 && cl <= 1.0 + 1e-9,
+                "a slab wider than the distance"
+            );
+            sum_np += np;
+            sum_cl += cl;
+            worst = worst.min(np);
+            within += usize::from(np >= 0.99);
+        }
+        // Measured at 0.855 and 0.144, with 1,597 of 2,000 within 1 %: the
+        // direction is only a choice (any one is sound), so this checks that
+        // it is the good one it is meant to be, not a bound.
+        let (mean_np, mean_cl) = (sum_np / f64::from(n), sum_cl / f64::from(n));
+        assert!(
+            mean_np >= 0.8 && within >= 1500 && mean_np >= 3.0 * mean_cl,
+            "near points {mean_np} (worst {worst}, {within} within 1 %), centre line {mean_cl}"
+        );
+    }
 }
