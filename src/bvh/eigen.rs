@@ -20,7 +20,20 @@ pub(crate) fn principal_axes(a: [[f64; 3]; 3]) -> [[f64; 3]; 3] {
     if a.iter().flatten().any(|x| !x.is_finite()) {
         return identity;
     }
-    let mut a = a;
+    // The eigenvectors do not depend on the matrix's scale, but the sweep's
+    // squares of entries would overflow or underflow for a covariance of
+    // coordinates far from 1 (fourth powers of lengths: above about `1e77`
+    // or below `1e-77` in `f64`), leaving loose, arbitrary boxes. A power of
+    // two brings the largest entry into `[1, 2)`, exactly.
+    let m = a.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+    if m == 0.0 {
+        return identity;
+    }
+    // `m`'s binary exponent `e` (`2^e <= m < 2^(e+1)`; `-1023` when
+    // subnormal), and `2^-e` built from its bits.
+    let e = ((m.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    let scale = f64::from_bits(((1023 - e).clamp(1, 2046) as u64) << 52);
+    let mut a = a.map(|row| row.map(|x| x * scale));
     // Columns of `v` are the eigenvectors.
     let mut v = identity;
     for _sweep in 0..32 {
@@ -108,6 +121,22 @@ mod tests {
                 let d: f64 = (0..3).map(|k| axes[i][k] * axes[j][k]).sum();
                 let want = if i == j { 1.0 } else { 0.0 };
                 assert!((d - want).abs() < 1e-12);
+            }
+        }
+    }
+
+    /// A covariance of coordinates near `1e100` has entries near `1e200`,
+    /// whose squares overflowed in the sweep (and those of `1e-100` underflowed):
+    /// the boxes of a mesh scaled by `1e80` took four times the node pairs.
+    #[test]
+    fn the_axes_do_not_depend_on_the_matrix_scale() {
+        let a = [[3.0, 1.0, 0.5], [1.0, 2.0, 0.25], [0.5, 0.25, 1.0]];
+        let unit = principal_axes(a);
+        for scale in [1e-300, 1e-200, 1e-150, 1e150, 1e200, 1e300] {
+            let axes = principal_axes(a.map(|row| row.map(|x| x * scale)));
+            for (e, f) in axes.iter().zip(&unit) {
+                let dot: f64 = (0..3).map(|k| e[k] * f[k]).sum();
+                assert!(dot.abs() > 1.0 - 1e-12, "scale {scale}: {e:?} against {f:?}");
             }
         }
     }

@@ -566,12 +566,16 @@ fn unit_normal<T: Float>(c: &[[T; 3]; 3]) -> [f64; 3] {
         e1[2] * e2[0] - e1[0] * e2[2],
         e1[0] * e2[1] - e1[1] * e2[0],
     ];
-    let len = Float::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if len > 0.0 && len.is_finite() {
-        n.map(|x| x / len)
-    } else {
-        [0.0; 3]
+    // Divided by its largest component first: the squares of a cross
+    // product (fourth powers of lengths) would overflow or underflow for
+    // meshes of coordinates beyond about `1e77` or below `1e-77`.
+    let m = n[0].abs().max(n[1].abs()).max(n[2].abs());
+    if !(m > 0.0 && m.is_finite()) {
+        return [0.0; 3];
     }
+    let n = n.map(|x| x / m);
+    let len = Float::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    n.map(|x| x / len)
 }
 
 /// The scatter matrix of the unit normals of `order`'s triangles about
