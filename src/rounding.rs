@@ -293,13 +293,45 @@ impl<T: Float> BoxError<T> {
 #[inline]
 #[must_use]
 pub(crate) fn gap_down<T: Float>(gap: T, pose_err_a: T, pose_err_b: T, reach_sum: T) -> T {
-    let slack = (pose_err_a + pose_err_b + gamma::<T>(8) * reach_sum) * (T::ONE + gamma::<T>(3));
+    let slack = gap_slack_up(pose_err_a, pose_err_b, reach_sum);
     let g = (gap - slack) * (T::ONE - gamma::<T>(7));
     if g.is_nan() {
         -T::INFINITY
     } else {
         g
     }
+}
+
+/// Section "Gap": what [`gap_down`] subtracts from a computed gap,
+/// `(delta_A + delta_B + gamma_8 (P_A + P_B))(1 + gamma_3)`.
+#[inline]
+#[must_use]
+pub(crate) fn gap_slack_up<T: Float>(pose_err_a: T, pose_err_b: T, reach_sum: T) -> T {
+    (pose_err_a + pose_err_b + gamma::<T>(8) * reach_sum) * (T::ONE + gamma::<T>(3))
+}
+
+/// Section "Resolution": the length below which a step cannot resolve
+/// distances: what the certified gap loses ([`gap_slack_up`]) plus
+/// `4 sqrt(eta)`, the most by which two bodies' bounding balls can be
+/// widened when their squared radii underflow (section "Summary").
+/// Not a margin: it only decides when a query reports
+/// [`CaOutcome::PrecisionLimit`](crate::ca::CaOutcome::PrecisionLimit).
+#[inline]
+#[must_use]
+pub(crate) fn resolution_up<T: Float>(pose_err_a: T, pose_err_b: T, reach_sum: T) -> T {
+    gap_slack_up(pose_err_a, pose_err_b, reach_sum) + T::from_u32(4) * T::SQRT_ETA_UP
+}
+
+/// Section "Resolution": the least reach of a body whose bounds this crate
+/// resolves, `2^8 * 2 sqrt(eta)` (about `1.1e-159` in `f64`, `2.7e-20` in
+/// `f32`): below it the underflow allowance `2 sqrt(eta)` of every radius
+/// (section "Summary") is more than `1/256` of the body, its balls and
+/// speed bounds are dominated by it, and a mesh query reports
+/// [`CaOutcome::PrecisionLimit`](crate::ca::CaOutcome::PrecisionLimit) at once.
+#[inline]
+#[must_use]
+pub(crate) fn least_resolved_reach<T: Float>() -> T {
+    T::from_u32(512) * T::SQRT_ETA_UP
 }
 
 /// Section "Step": a time step no longer than `(gap - clearance) / (mu_a + mu_b)`,
@@ -343,6 +375,20 @@ pub(crate) fn two_sum<T: Float>(a: T, b: T) -> (T, T) {
     let bb = hi - a;
     let lo = (a - (hi - bb)) + (b - bb);
     (hi, lo)
+}
+
+/// Section "Pair frame": the slack of a centre moved into a pair's frame,
+/// `s' = (s + |lo_x| + |lo_y| + |lo_z|)(1 + gamma_3)` from the previous
+/// slack `s >= 0` and TwoSum's exact residuals `lo` of the centre's three
+/// differences: at least `s + |lo|_2`, the distance of the stored centre
+/// from the exact one. Exactly `s` when every residual is zero.
+#[inline]
+#[must_use]
+pub(crate) fn rebase_slack_up<T: Float>(slack: T, lo: [T; 3]) -> T {
+    if lo == [T::ZERO; 3] {
+        return slack;
+    }
+    (slack + lo[0].abs() + lo[1].abs() + lo[2].abs()) * (T::ONE + gamma::<T>(3))
 }
 
 /// Section "Exact sums": whether `t + step >= end` holds in exact arithmetic

@@ -1,6 +1,6 @@
 //! The simplest stepper: two bounding balls.
 
-use crate::ca::driver::{gap_step, placement_error};
+use crate::ca::driver::{gap_step, placement_error, precision_limit};
 use crate::ca::{CaParams, CaStep, StepResult, Witness};
 use crate::{BoundingBall, Direction, Float, Point3, PreparedMotion, Vec3};
 
@@ -76,6 +76,9 @@ impl<T: Float> CaStep<T> for BallPair<T> {
         // Along n the balls span [ca.n - ra, ca.n + ra] and [cb.n - rb, cb.n + rb].
         let gap = d.dot(nv) - ra - rb;
         let (step, _) = gap_step(gap, params.clearance(), (ea, eb), (pa, pb), (mu_a, mu_b));
+        if let Some(limit) = precision_limit(step, params.clearance(), (ea, eb), (pa, pb)) {
+            return limit;
+        }
         StepResult::Advance {
             step,
             witness: Some(witness),

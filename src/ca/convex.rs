@@ -1,6 +1,6 @@
 //! Conservative advancement of two convex bodies through any proximity oracle.
 
-use crate::ca::driver::{gap_step, placement_error};
+use crate::ca::driver::{gap_step, placement_error, precision_limit};
 use crate::ca::{BoundChoice, CaParams, CaStep, StepResult, Witness};
 use crate::rounding::diff_up;
 use crate::{BoundKind, Direction, Float, Point3, Pose, PreparedMotion, Vec3, VertexSet};
@@ -256,6 +256,9 @@ impl<T: Float, P: Proximity<T>> CaStep<T> for ConvexPair<'_, T, P> {
                 }
             }
         };
+        if let Some(limit) = precision_limit(step, params.clearance(), (ea, eb), (ra, rb)) {
+            return limit;
+        }
         StepResult::Advance {
             step,
             witness: Some(w),

@@ -1,8 +1,11 @@
 //! The conservative-advancement loop.
 
-use crate::ca::{CaError, CaOutcome, CaParams, CaReport, Contact, ContactCriterion, Witness};
+use crate::ca::{
+    CaError, CaOutcome, CaParams, CaReport, Contact, ContactCriterion, Witness, Work,
+};
 use crate::rounding::{
     advance_down, centre_reach_up, diff_down, lever_up, placed_reach_up, pose_error_up, sum_reaches,
+    sum_up,
 };
 use crate::{Direction, Float, PreparedMotion, RigidMotion};
 
@@ -15,6 +18,20 @@ pub enum StepResult<T> {
         witness: Witness<T>,
         /// The contact normal from A to B, if known.
         normal: Option<Direction<T>>,
+    },
+    /// The step's share of the work budget
+    /// ([`CaParams::work_budget`], less what earlier steps of the query used)
+    /// ran out before a step was certified: the query ends with
+    /// [`CaOutcome::WorkLimit`] at `t`.
+    WorkLimit,
+    /// The bodies are within the contact distance plus what the placement's
+    /// rounding can resolve, and the contact distance is below that
+    /// `resolution`: no step can be certified, and no distance within the
+    /// contact distance trusted. The query ends with
+    /// [`CaOutcome::PrecisionLimit`] at `t`.
+    PrecisionLimit {
+        /// What the certified gaps lose to rounding at `t`.
+        resolution: T,
     },
     /// The bodies do not touch during `[t, t + step]` (certified).
     Advance {
@@ -39,7 +56,10 @@ pub enum StepResult<T> {
 /// another geometry can use [`gap_step`] to turn a separating gap into a step.
 pub trait CaStep<T: Float> {
     /// Inspects the pair at time `t` (`a` and `b` are the motions restricted
-    /// to `[t, t_end]`).
+    /// to `[t, t_end]`, in the pair's frame: [`time_of_impact`]). The
+    /// `params` are the query's, with
+    /// [`work_budget`](CaParams::work_budget) what is left of it for this
+    /// step.
     fn step(
         &mut self,
         t: T,
@@ -47,6 +67,15 @@ pub trait CaStep<T: Float> {
         b: &PreparedMotion<T>,
         params: &CaParams<T>,
     ) -> StepResult<T>;
+
+    /// The work this stepper has done since it was made (a running total
+    /// that never decreases between the steps of a query): what
+    /// [`time_of_impact`] charges to the query's
+    /// [`work_budget`](CaParams::work_budget) and reports in
+    /// [`CaReport::work`]. The default counts nothing.
+    fn work(&self) -> Work {
+        Work::ZERO
+    }
 }
 
 /// The first time of contact of two moving bodies over the motions' common
@@ -81,19 +110,36 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
     if motion_a.interval() != motion_b.interval() {
         return Err(CaError::IntervalMismatch);
     }
+    // The pair's frame (`proofs/floating-point.md`, "Pair frame"): the world
+    // translated so that A's rotation centre starts at the origin. Every
+    // placement's rounding then follows the pair's own extent and motion,
+    // not its distance from the world origin; witnesses go back at the end.
+    let origin = motion_a.centre();
+    let (motion_a, motion_b) = (&motion_a.rebased(origin), &motion_b.rebased(origin));
+    let to_world = |w: Witness<T>| Witness {
+        on_a: w.on_a + origin.to_vec3(),
+        on_b: w.on_b + origin.to_vec3(),
+        ..w
+    };
     let end = motion_a.interval().end();
     let mut t = motion_a.interval().start();
     let mut iterations = 0;
     let mut last_step: Option<T> = None;
-    let report = |outcome, iterations| {
+    let work_before = stepper.work();
+    let report = |outcome, iterations, work: Work| {
         Ok(CaReport {
             outcome,
             iterations,
+            work: work.saturating_sub(work_before),
         })
     };
     loop {
         if iterations == params.max_iterations {
-            return report(CaOutcome::IterationLimit { time: t }, iterations);
+            return report(
+                CaOutcome::IterationLimit { time: t },
+                iterations,
+                stepper.work(),
+            );
         }
         iterations += 1;
         // The time-resolved step: bounds over [t, horizon] only.
@@ -110,11 +156,25 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
         };
         let pa = PreparedMotion::new(&motion_a.restrict(t, horizon)?);
         let pb = PreparedMotion::new(&motion_b.restrict(t, horizon)?);
-        match stepper.step(t, &pa, &pb, params) {
+        // What is left of the query's work budget is this step's.
+        let used = stepper.work().saturating_sub(work_before);
+        let step_params = params.with_work_budget(params.work_budget.saturating_sub(used));
+        match stepper.step(t, &pa, &pb, &step_params) {
+            StepResult::WorkLimit => {
+                let outcome = CaOutcome::WorkLimit { time: t };
+                return report(outcome, iterations, stepper.work());
+            }
+            StepResult::PrecisionLimit { resolution } => {
+                let outcome = CaOutcome::PrecisionLimit {
+                    time: t,
+                    resolution,
+                };
+                return report(outcome, iterations, stepper.work());
+            }
             StepResult::Touching { witness, normal } => {
                 let contact = Contact {
                     time: t,
-                    witness: Some(witness),
+                    witness: Some(to_world(witness)),
                     normal: normal.or_else(|| witness.normal()),
                 };
                 let outcome = if iterations == 1 {
@@ -125,7 +185,7 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
                         criterion: ContactCriterion::Distance,
                     }
                 };
-                return report(outcome, iterations);
+                return report(outcome, iterations, stepper.work());
             }
             StepResult::Advance {
                 step,
@@ -145,7 +205,7 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
                 } else if sum_reaches(t, step, end) {
                     // [t, t + step] is contact-free and reaches the end, in
                     // exact arithmetic (section "Exact sums").
-                    return report(CaOutcome::Separated, iterations);
+                    return report(CaOutcome::Separated, iterations, stepper.work());
                 } else {
                     step
                 };
@@ -158,7 +218,7 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
                 if stalled && !sum_reaches(t, params.time_tolerance, end) {
                     let contact = Contact {
                         time: t,
-                        witness,
+                        witness: witness.map(to_world),
                         normal: normal.or_else(|| witness.and_then(|w| w.normal())),
                     };
                     return report(
@@ -167,12 +227,17 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
                             criterion: ContactCriterion::TimeTolerance,
                         },
                         iterations,
+                        stepper.work(),
                     );
                 }
                 if next <= t {
                     // Time cannot advance any more (a step below its
                     // resolution) within the tolerance of the end.
-                    return report(CaOutcome::IterationLimit { time: t }, iterations);
+                    return report(
+                CaOutcome::IterationLimit { time: t },
+                iterations,
+                stepper.work(),
+            );
                 }
                 t = next;
             }
@@ -200,6 +265,14 @@ pub fn placement_error<T: Float>(motion: &RigidMotion<T>, t: T, radius: T) -> (T
         centre_reach + motion.local_reach(),
         !motion.orientation().is_identity(),
     );
+    // A centre moved into a pair's frame is off the exact one by at most its
+    // slack (section "Pair frame").
+    let slack = motion.centre_slack();
+    let err = if slack > T::ZERO {
+        sum_up(err, slack)
+    } else {
+        err
+    };
     (err, placed_reach_up(centre_reach, lever, err))
 }
 
@@ -214,4 +287,20 @@ pub fn placement_error<T: Float>(motion: &RigidMotion<T>, t: T, radius: T) -> (T
 pub fn gap_step<T: Float>(gap: T, clearance: T, err: (T, T), reach: (T, T), mu: (T, T)) -> (T, T) {
     let g = crate::rounding::gap_down(gap, err.0, err.1, reach.0 + reach.1);
     (crate::rounding::step_down(g, clearance, mu.0, mu.1), g)
+}
+
+/// For a stepper that found a zero step: [`StepResult::PrecisionLimit`] when
+/// the placement cannot resolve the clearance (`err`, `reach` as in
+/// [`gap_step`]), so that the zero step is the rounding's, not the bodies'.
+pub(crate) fn precision_limit<T: Float>(
+    step: T,
+    clearance: T,
+    err: (T, T),
+    reach: (T, T),
+) -> Option<StepResult<T>> {
+    if step > T::ZERO {
+        return None;
+    }
+    let resolution = crate::rounding::resolution_up(err.0, err.1, reach.0 + reach.1);
+    (!(resolution < clearance)).then_some(StepResult::PrecisionLimit { resolution })
 }

@@ -32,5 +32,5 @@ pub use convex::{ConvexPair, GjkProximity, Proximity};
 pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};
 #[cfg(feature = "alloc")]
 pub use mesh::{MeshPair, MeshWorkspace, TraversalStats};
-pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness};
-pub use params::{BoundChoice, CaError, CaParams, MeshParams, Parameter};
+pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness, Work};
+pub use params::{BoundChoice, CaError, CaParams, MeshParams, Parameter, WitnessSearch};

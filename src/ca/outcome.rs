@@ -107,6 +107,30 @@ pub enum CaOutcome<T> {
         /// The safe time reached.
         time: T,
     },
+    /// Undecided from `time` on: the query's work budget
+    /// ([`CaParams::work_budget`](crate::ca::CaParams::work_budget)) ran out
+    /// during the step from `time`. No contact before `time` (certified),
+    /// nothing known after: treat it as a possible contact at `time`, as
+    /// [`IterationLimit`](Self::IterationLimit).
+    WorkLimit {
+        /// The safe time reached.
+        time: T,
+    },
+    /// Undecided from `time` on: at `time` the bodies came within the
+    /// contact distance plus what the placement's rounding can resolve, and
+    /// the contact distance is below that resolution, so no step can be
+    /// certified and no distance within the contact distance trusted. No
+    /// contact before `time` (certified); treat it as a possible contact at
+    /// `time`. A contact distance above `resolution` (or bodies nearer the
+    /// origin of their own frames, or of smaller extent) resolves it.
+    PrecisionLimit {
+        /// The safe time reached.
+        time: T,
+        /// The length the placement at `time` cannot resolve: the certified
+        /// gaps lose this much to rounding (at least half the contact
+        /// distance, else this outcome is not given).
+        resolution: T,
+    },
 }
 
 impl<T: Float> CaOutcome<T> {
@@ -115,23 +139,30 @@ impl<T: Float> CaOutcome<T> {
     pub fn contact(&self) -> Option<&Contact<T>> {
         match self {
             Self::Contact { contact, .. } | Self::InitialContact(contact) => Some(contact),
-            Self::Separated | Self::IterationLimit { .. } => None,
+            Self::Separated
+            | Self::IterationLimit { .. }
+            | Self::WorkLimit { .. }
+            | Self::PrecisionLimit { .. } => None,
         }
     }
 
-    /// The earliest time a contact may happen: the contact time, the
-    /// iteration limit's time, or `None` when separated over the interval.
+    /// The earliest time a contact may happen: the contact time, the time
+    /// an undecided query reached (iteration, work or precision limit), or
+    /// `None` when separated over the interval.
     #[must_use]
     pub fn earliest_possible_contact(&self) -> Option<T> {
         match self {
             Self::Contact { contact, .. } | Self::InitialContact(contact) => Some(contact.time),
-            Self::IterationLimit { time } => Some(*time),
+            Self::IterationLimit { time }
+            | Self::WorkLimit { time }
+            | Self::PrecisionLimit { time, .. } => Some(*time),
             Self::Separated => None,
         }
     }
 }
 
-/// The outcome with the number of iterations (calls of the stepper) it took.
+/// The outcome with the number of iterations (calls of the stepper) it took
+/// and the work it did.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
 pub struct CaReport<T> {
@@ -139,4 +170,62 @@ pub struct CaReport<T> {
     pub outcome: CaOutcome<T>,
     /// Iterations used (at least one).
     pub iterations: u32,
+    /// The work the stepper did for this query ([`CaStep::work`](crate::ca::CaStep::work);
+    /// zero for steppers that do not count it).
+    pub work: Work,
+}
+
+/// Work of a query, counted by the steppers that descend hierarchies
+/// ([`MeshPair`](crate::ca::MeshPair)), or a budget of it
+/// ([`CaParams::work_budget`](crate::ca::CaParams::work_budget)).
+///
+/// ```
+/// use motion_bound::ca::Work;
+/// let budget = Work::new(1_000, 100);
+/// let used = Work::new(400, 100);
+/// assert_eq!(budget.saturating_sub(used), Work::new(600, 0));
+/// assert!(!used.exceeds(budget) && Work::new(0, 101).exceeds(budget));
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub struct Work {
+    /// Node pairs taken from the traversal's queue and worked on (split,
+    /// settled or measured): each costs up to two child evaluations.
+    pub node_pairs: u64,
+    /// Triangle pairs whose exact distance was computed.
+    pub triangle_pairs: u64,
+}
+
+impl Work {
+    /// No work.
+    pub const ZERO: Self = Self::new(0, 0);
+    /// No limit.
+    pub const UNLIMITED: Self = Self::new(u64::MAX, u64::MAX);
+
+    /// `node_pairs` node pairs and `triangle_pairs` triangle pairs.
+    #[inline]
+    #[must_use]
+    pub const fn new(node_pairs: u64, triangle_pairs: u64) -> Self {
+        Self {
+            node_pairs,
+            triangle_pairs,
+        }
+    }
+
+    /// Each count less `other`'s, at least zero.
+    #[inline]
+    #[must_use]
+    pub const fn saturating_sub(self, other: Self) -> Self {
+        Self::new(
+            self.node_pairs.saturating_sub(other.node_pairs),
+            self.triangle_pairs.saturating_sub(other.triangle_pairs),
+        )
+    }
+
+    /// Whether either count is above `budget`'s.
+    #[inline]
+    #[must_use]
+    pub const fn exceeds(self, budget: Self) -> bool {
+        self.node_pairs > budget.node_pairs || self.triangle_pairs > budget.triangle_pairs
+    }
 }

@@ -2,6 +2,7 @@
 
 use core::fmt;
 
+use crate::ca::Work;
 use crate::{BoundKind, Float};
 
 /// Which directed bound a conservative-advancement query uses: a policy over
@@ -32,6 +33,28 @@ impl BoundChoice {
             Self::Evq | Self::Auto => BoundKind::Evq,
         }
     }
+}
+
+/// Which pair within the contact distance a contact reports as its witness
+/// ([`Contact::witness`](crate::ca::Contact::witness)), for steppers that
+/// search for it ([`MeshPair`](crate::ca::MeshPair); the others measure one
+/// closest pair anyway).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum WitnessSearch {
+    /// The closest triangle pair at the contact time: once a pair within the
+    /// contact distance is found, a branch and bound over the pairs whose
+    /// certified gaps are below its distance (within the work budget; a
+    /// budget that runs out keeps the closest found so far). What an engine
+    /// builds contact points and normals from. About a quarter to a third
+    /// more work on the seed's Table 1 queries (`docs/performance.md`).
+    #[default]
+    Closest,
+    /// The first pair found within the contact distance: no search beyond
+    /// it. Its distance is at most the contact distance, and may be larger
+    /// than the least (up to 1.6 times on the shipped meshes). For queries
+    /// that need only the time.
+    First,
 }
 
 /// The parameters of a conservative-advancement query.
@@ -81,6 +104,20 @@ pub struct CaParams<T> {
     /// Never looser; much tighter when a body recedes or turns away.
     /// Default `true`; `false` steps exactly as the seed's Eq. 1 to 3 do.
     pub one_sided: bool,
+    /// The most work one query may do, over all its iterations: node pairs
+    /// and triangle pairs of a [`MeshPair`](crate::ca::MeshPair)'s
+    /// traversal (steppers that do not count work ignore it). When either
+    /// runs out the query ends with
+    /// [`CaOutcome::WorkLimit`](crate::ca::CaOutcome::WorkLimit) at the
+    /// time reached (or, when the step has already found the bodies within
+    /// the contact distance, with that contact and the closest pair found
+    /// so far). [`CaReport::work`](crate::ca::CaReport::work) says what a
+    /// query used. Default [`DEFAULT_WORK_BUDGET`](Self::DEFAULT_WORK_BUDGET);
+    /// [`Work::UNLIMITED`] for none.
+    pub work_budget: Work,
+    /// Which pair a contact reports as its witness. Default
+    /// [`WitnessSearch::Closest`].
+    pub witness: WitnessSearch,
 }
 
 impl<T: Float> Default for CaParams<T> {
@@ -92,11 +129,33 @@ impl<T: Float> Default for CaParams<T> {
             bound: BoundChoice::Auto,
             horizon_factor: T::TWO,
             one_sided: true,
+            work_budget: Self::DEFAULT_WORK_BUDGET,
+            witness: WitnessSearch::Closest,
         }
     }
 }
 
 impl<T: Float> CaParams<T> {
+    /// The default [`work_budget`](Self::work_budget): 100,000 node pairs and
+    /// 20,000 triangle pairs, about 50 ms of the slowest kind of step on
+    /// meshes of 100,000 triangles (`docs/performance.md`, "Bounded cost"),
+    /// and about fifty times what a query of the seed's Table 1 uses.
+    pub const DEFAULT_WORK_BUDGET: Work = Work::new(100_000, 20_000);
+
+    /// With another work budget ([`Work::UNLIMITED`] for none).
+    #[must_use]
+    pub const fn with_work_budget(mut self, budget: Work) -> Self {
+        self.work_budget = budget;
+        self
+    }
+
+    /// With another witness search.
+    #[must_use]
+    pub const fn with_witness(mut self, search: WitnessSearch) -> Self {
+        self.witness = search;
+        self
+    }
+
     /// With another contact distance.
     #[must_use]
     pub const fn with_contact_distance(mut self, d: T) -> Self {

@@ -3,6 +3,7 @@
 use crate::error::{check_components, InputError, Quantity};
 use crate::math::pose::mat_mul;
 use crate::math::rotation::rotate_about_axis;
+use crate::rounding::two_sum;
 use crate::{BodyPoint, Direction, Float, Isometry, Point3, Pose, Rotation, TimeInterval, Vec3};
 
 /// A rigid motion with constant linear velocity `v` of the rotation centre and
@@ -56,6 +57,11 @@ pub struct RigidMotion<T> {
     interval: TimeInterval<T>,
     omega: T,
     axis: Vec3<T>,
+    /// An upper bound of the distance between `centre` and the exact centre
+    /// the motion stands for: `0`, except for a motion moved into a pair's
+    /// frame by [`rebased`](Self::rebased), whose centre is the rounded
+    /// difference (`proofs/floating-point.md`, "Pair frame").
+    centre_slack: T,
 }
 
 impl<T: Float> RigidMotion<T> {
@@ -104,6 +110,7 @@ impl<T: Float> RigidMotion<T> {
             interval,
             omega,
             axis,
+            centre_slack: T::ZERO,
         })
     }
 
@@ -308,6 +315,44 @@ impl<T: Float> RigidMotion<T> {
             local_reach: reach_up(local_centre),
             ..self
         })
+    }
+
+    /// The same motion in a frame translated by `-origin` (the world point
+    /// `origin` becomes the frame's origin; axes, velocities and the
+    /// interval are kept): what [`time_of_impact`](crate::ca::time_of_impact)
+    /// places a pair in, so that rounding follows the pair's own extent, not
+    /// its distance from the world origin.
+    ///
+    /// The new centre is the rounded difference `fl(x0 - origin)`; its
+    /// rounding error, known exactly by TwoSum, is carried as the centre's
+    /// slack and added to the placement error by
+    /// [`placement_error`](crate::ca::placement_error)
+    /// (`proofs/floating-point.md`, "Pair frame"). The difference is exact
+    /// (no slack) when each component of `origin` is within a factor two of
+    /// the centre's (Sterbenz), in particular for `origin = x0`.
+    #[must_use]
+    pub(crate) fn rebased(&self, origin: Point3<T>) -> Self {
+        let (x, y, z) = (
+            two_sum(self.centre.x, -origin.x),
+            two_sum(self.centre.y, -origin.y),
+            two_sum(self.centre.z, -origin.z),
+        );
+        Self {
+            centre: Point3::new(x.0, y.0, z.0),
+            centre_slack: crate::rounding::rebase_slack_up(
+                self.centre_slack,
+                [x.1, y.1, z.1],
+            ),
+            ..*self
+        }
+    }
+
+    /// An upper bound of the distance between the stored centre and the
+    /// exact one: `0` except in a pair's frame ([`rebased`](Self::rebased)).
+    #[inline]
+    #[must_use]
+    pub(crate) const fn centre_slack(&self) -> T {
+        self.centre_slack
     }
 
     /// The same motion, with bounds taken over `[start, end]` instead.

@@ -18,8 +18,10 @@ use seeds::Seeds;
 use traversal::{slab_gap, Placed, Rates};
 
 use crate::bvh::{BallTree, Hierarchy};
-use crate::ca::{CaError, CaParams, CaStep, MeshParams, StepResult, Witness};
-use crate::rounding::{diff_up, gap_down, step_down};
+use crate::ca::{
+    CaError, CaParams, CaStep, MeshParams, StepResult, Witness, WitnessSearch, Work,
+};
+use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down};
 use crate::{Direction, Float, PreparedMotion};
 
 /// Conservative advancement of two non-convex triangle meshes (a
@@ -182,8 +184,25 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         // reads as reaching the end (section "Exact sums").
         let mut best = diff_up(b.motion().interval().end(), t);
         let (cd, clear) = (params.contact_distance, params.clearance());
-        let mut witness: Option<Witness<T>> = None;
-        let mut normal = None;
+        // Below the resolution a pair within the contact distance cannot be
+        // told from one within its clearance: no near pair is split to look
+        // for a contact (it would split every pair within the resolution,
+        // down to every triangle pair), and a zero step ends the query
+        // (`proofs/09-ca-toi.md`, Lemma 9.6).
+        let resolution = resolution_up(pa.err, pb.err, pa.reach + pb.reach);
+        let limited = !(resolution < clear);
+        // Bodies so small that their squared lengths underflow: their balls
+        // and bounds are the underflow allowances' (section "Resolution").
+        let least = least_resolved_reach::<T>();
+        if self.a.reach < least || self.b.reach < least {
+            return StepResult::PrecisionLimit {
+                resolution: resolution.max_nan(least),
+            };
+        }
+        let mut found = Found::default();
+        let first_only = params.witness == WitnessSearch::First;
+        let start = self.stats;
+        let budget = params.work_budget;
         // The previous step's leaf pairs with the least steps are measured
         // first (Lemma 9.4): each one's own step is safe for that pair, and,
         // usually close to the final step, it lets the descent prune children
@@ -193,21 +212,26 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         for &(i, j) in &seed.pairs[..seed.len] {
             let (i, j) = (i as usize, j as usize);
             let corners = (pa.corners(&self.a.leaves[i]), pb.corners(&self.b.leaves[j]));
-            if let Some(touching) = self.triangle_pair(
+            self.triangle_pair(
                 (&pa, &pb),
                 (i, j),
                 (&corners.0, &corners.1),
                 (rates, cd, clear),
-                (&mut best, &mut witness, &mut normal),
-            ) {
-                return touching;
-            }
+                (&mut best, &mut found),
+            );
         }
         self.ws.clear();
         self.ws.placed.push(pa.place(self.a, 0));
         self.ws.placed.push(pb.place(self.b, 0));
-        self.ws
-            .enqueue(Pending::new(NodeStep::Near(-T::INFINITY), (0, 0), (0, 1)));
+        let root = if limited {
+            NodeStep::Apart {
+                step: T::ZERO,
+                far: false,
+            }
+        } else {
+            NodeStep::Near(-T::INFINITY)
+        };
+        self.ws.enqueue(Pending::new(root, (0, 0), (0, 1)));
         while let Some(Queued { slot, .. }) = self.ws.heap.pop() {
             let Pending {
                 near,
@@ -218,12 +242,28 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 at,
             } = self.ws.pending[slot as usize];
             let key = T::from_f64(key.0);
-            if !near && key >= best * self.accept {
+            if let Some(touch) = found.touching {
+                // A contact is found: the rest is a branch and bound for the
+                // closest pair. Near pairs come first, least certified gap
+                // (a lower bound of their distance) first; every other pair
+                // is farther than the contact distance.
+                if first_only || !near || key >= touch.distance {
+                    break;
+                }
+            } else if !near && key >= best * self.accept {
                 // Best-first: every pair left has a step at least `key`, so
                 // `min(best, key)` is safe for the whole meshes.
                 self.stats.pruned += self.ws.heap.len() as u64 + 1;
                 best = best.min_nan(key);
                 break;
+            }
+            if self.work_since(start).exceeds(budget) {
+                // Out of work: a contact already found stands (its witness
+                // the closest pair so far); anything else is undecided.
+                if found.touching.is_some() {
+                    break;
+                }
+                return StepResult::WorkLimit;
             }
             self.stats.node_pairs += 1;
             if far {
@@ -245,8 +285,6 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 // Cheap first: the corners' slab along the line joining the
                 // ball centres (Lemma 9.1 holds for any direction).
                 let (qa, qb) = (self.ws.placed[at.0 as usize], self.ws.placed[at.1 as usize]);
-                // A pair certainly farther apart than the contact distance
-                // along it is pruned when its step reaches the best.
                 if let Ok(n) = Direction::try_new(qb.centre - qa.centre) {
                     let g = gap_down(
                         slab_gap(&ta, &tb, n.get()),
@@ -254,7 +292,15 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                         pb.leaf_err(lb),
                         pa.reach + pb.reach,
                     );
-                    if g > cd {
+                    if let Some(touch) = found.touching {
+                        // The slab's gap is a lower bound of the distance.
+                        if g >= touch.distance {
+                            self.stats.pruned += 1;
+                            continue;
+                        }
+                    } else if g > cd {
+                        // A pair certainly farther apart than the contact
+                        // distance is pruned when its step reaches the best.
                         self.stats.bounds += 2;
                         let (mu_a, mu_b) = rates.leaves(&pa, &pb, (la, lb), n);
                         if step_down(g, clear, mu_a, mu_b) >= best {
@@ -263,15 +309,13 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                         }
                     }
                 }
-                if let Some(touching) = self.triangle_pair(
+                self.triangle_pair(
                     (&pa, &pb),
                     (li, lj),
                     (&ta, &tb),
                     (rates, cd, clear),
-                    (&mut best, &mut witness, &mut normal),
-                ) {
-                    return touching;
-                }
+                    (&mut best, &mut found),
+                );
                 continue;
             }
             // Descend into the larger ball (a leaf is never split).
@@ -293,16 +337,100 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                     ((i, child), (at.0, slot))
                 };
                 let q = (self.ws.placed[at.0 as usize], self.ws.placed[at.1 as usize]);
-                match self.node_step(&pa, &pb, pair, q, (rates, cd, clear), best) {
-                    NodeStep::Apart { step, .. } if step >= best => self.stats.pruned += 1,
-                    found => self.ws.enqueue(Pending::new(found, pair, at)),
+                // In the search for the closest pair only gaps matter: a
+                // best step of zero skips the directed bounds.
+                // The closest pair's direction separates the volumes near
+                // it best.
+                let (best_step, also) = if found.touching.is_some() {
+                    (T::ZERO, found.touching_normal)
+                } else {
+                    (best, None)
+                };
+                // Below the resolution no pair is near: one within the
+                // clearance (or unseparated) is a zero step.
+                let near_within = if limited { -T::INFINITY } else { cd };
+                let step = match self.node_step(
+                    &pa,
+                    &pb,
+                    pair,
+                    q,
+                    (rates, near_within, clear),
+                    (best_step, also),
+                ) {
+                    NodeStep::Near(_) if limited => NodeStep::Apart {
+                        step: T::ZERO,
+                        far: false,
+                    },
+                    other => other,
+                };
+                match (step, found.touching) {
+                    (NodeStep::Near(g), Some(touch)) if g < touch.distance => {
+                        self.ws.enqueue(Pending::new(step, pair, at));
+                    }
+                    (_, Some(_)) => self.stats.pruned += 1,
+                    (NodeStep::Apart { step, .. }, None) if step >= best => self.stats.pruned += 1,
+                    (found, None) => self.ws.enqueue(Pending::new(found, pair, at)),
                 }
             }
         }
+        if let Some(witness) = found.touching {
+            self.closest = found.touching_triangles;
+            return StepResult::Touching {
+                witness,
+                normal: found.touching_normal,
+            };
+        }
+        self.closest = found.closest_triangles;
+        if limited && best <= T::ZERO {
+            return StepResult::PrecisionLimit { resolution };
+        }
         StepResult::Advance {
             step: best,
-            witness,
-            normal,
+            witness: found.closest,
+            normal: found.normal,
+        }
+    }
+
+    fn work(&self) -> Work {
+        Work::new(self.stats.node_pairs, self.stats.triangle_pairs)
+    }
+}
+
+impl<T: Float> MeshPair<'_, T> {
+    /// The work done since the counters read `start`.
+    #[inline]
+    fn work_since(&self, start: TraversalStats) -> Work {
+        Work::new(
+            self.stats.node_pairs - start.node_pairs,
+            self.stats.triangle_pairs - start.triangle_pairs,
+        )
+    }
+}
+
+/// What one step's measured triangle pairs found.
+#[derive(Clone, Copy, Debug)]
+struct Found<T> {
+    /// The closest pair measured, and its triangles.
+    closest: Option<Witness<T>>,
+    closest_triangles: Option<(u32, u32)>,
+    /// The direction of the pair with the least step.
+    normal: Option<Direction<T>>,
+    /// The closest pair within the contact distance, if any: its witness,
+    /// triangles and direction.
+    touching: Option<Witness<T>>,
+    touching_triangles: Option<(u32, u32)>,
+    touching_normal: Option<Direction<T>>,
+}
+
+impl<T> Default for Found<T> {
+    fn default() -> Self {
+        Self {
+            closest: None,
+            closest_triangles: None,
+            normal: None,
+            touching: None,
+            touching_triangles: None,
+            touching_normal: None,
         }
     }
 }

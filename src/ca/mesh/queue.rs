@@ -147,11 +147,15 @@ impl PartialOrd for Queued {
 
 impl Ord for Queued {
     /// Reversed: `BinaryHeap` pops the greatest, which is the near pair with
-    /// the least gap, else the pair with the least step.
+    /// the least gap, else the pair with the least step; among equal keys the
+    /// one queued last (depth first: below the resolution every pair within
+    /// the clearance has the step zero, and a dive finds a zero-step leaf
+    /// soonest).
     fn cmp(&self, other: &Self) -> core::cmp::Ordering {
         self.near
             .cmp(&other.near)
             .then_with(|| other.key.0.total_cmp(&self.key.0))
+            .then_with(|| self.slot.cmp(&other.slot))
     }
 }
 

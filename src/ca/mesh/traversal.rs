@@ -3,10 +3,10 @@
 //! and 9.2).
 
 use super::queue::NodeStep;
-use super::MeshPair;
+use super::{Found, MeshPair};
 use crate::bvh::{Hierarchy, Leaf};
 use crate::ca::driver::{gap_step, placement_error};
-use crate::ca::{StepResult, Witness};
+use crate::ca::Witness;
 use crate::geometry::closest::triangle_triangle_vec;
 use crate::rounding::{
     add_up, crude_speed_up, gap_down, lever_up, piece_speed_margin_up, step_down, BoxError,
@@ -225,18 +225,19 @@ impl<T: Float> MeshPair<'_, T> {
     /// nearest points of the boxes' middle rectangles,
     /// `near_points_direction`), over the balls' directed bounds along it.
     ///
-    /// A pair whose certified gap is at most the contact distance (or that
-    /// no direction separates) is a [`NodeStep::Near`] candidate: triangles
-    /// below it may be within the contact distance now, so it is split
-    /// whatever its step, nearest first.
+    /// A pair whose certified gap is at most `near_within` (the contact
+    /// distance; `-inf` below the resolution) or that no direction separates
+    /// is a [`NodeStep::Near`] candidate: triangles below it may be within
+    /// the contact distance now, so it is split whatever its step, nearest
+    /// first.
     pub(super) fn node_step(
         &mut self,
         pa: &Placed<'_, T>,
         pb: &Placed<'_, T>,
         (i, j): (u32, u32),
         (qa, qb): (PlacedNode<T>, PlacedNode<T>),
-        (rates, contact_distance, clearance): (Rates, T, T),
-        best_step: T,
+        (rates, near_within, clearance): (Rates, T, T),
+        (best_step, also): (T, Option<Direction<T>>),
     ) -> NodeStep<T> {
         let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
         let d = qb.centre - qa.centre;
@@ -265,6 +266,9 @@ impl<T: Float> MeshPair<'_, T> {
         if let Some(n) = near_points_direction(&qa, &qb) {
             consider(n, box_gap(n.get()));
         }
+        if let Some(n) = also {
+            consider(n, box_gap(n.get()));
+        }
         let Some((gap, n)) = best else {
             self.stats.overlapping += 1;
             return NodeStep::Near(-T::INFINITY);
@@ -272,7 +276,7 @@ impl<T: Float> MeshPair<'_, T> {
         // The certified gap (section "Gap"): below the contact distance the
         // pair is a candidate for contact now.
         let g = gap_down(gap, pa.err, pb.err, pa.reach + pb.reach);
-        if g.is_nan() || g <= contact_distance {
+        if g.is_nan() || g <= near_within {
             return NodeStep::Near(g);
         }
         // Orient n from A to B: the slab gap is measured along it.
@@ -298,17 +302,18 @@ impl<T: Float> MeshPair<'_, T> {
     }
 
     /// Measures one triangle pair (leaf indices `i` in A, `j` in B): its
-    /// exact distance (a witness) and, when it is apart, its own safe step
-    /// along its closest direction, folded into `best` (Lemma 9.1). Returns
-    /// the step's result when the pair is within the contact distance.
+    /// exact distance (a witness, kept in `found` when it is the closest so
+    /// far, or the closest within the contact distance) and, when it is
+    /// farther apart than the contact distance, its own safe step along its
+    /// closest direction, folded into `best` (Lemma 9.1).
     pub(super) fn triangle_pair(
         &mut self,
         (pa, pb): (&Placed<'_, T>, &Placed<'_, T>),
         (i, j): (usize, usize),
         (ta, tb): (&[Vec3<T>; 3], &[Vec3<T>; 3]),
         (rates, contact_distance, clearance): (Rates, T, T),
-        (best, witness, normal): (&mut T, &mut Option<Witness<T>>, &mut Option<Direction<T>>),
-    ) -> Option<StepResult<T>> {
+        (best, found): (&mut T, &mut Found<T>),
+    ) {
         let (la, lb) = (&self.a.leaves[i], &self.b.leaves[j]);
         self.stats.triangle_pairs += 1;
         let cp = triangle_triangle_vec(ta, tb);
@@ -317,18 +322,26 @@ impl<T: Float> MeshPair<'_, T> {
             on_a: Point3::from_vec3(cp.on_a),
             on_b: Point3::from_vec3(cp.on_b),
         };
+        let triangles = Some((la.triangle, lb.triangle));
         let dir = Direction::try_new(cp.on_b - cp.on_a);
-        if witness.is_none_or(|b: Witness<T>| w.distance < b.distance) {
-            *witness = Some(w);
-            self.closest = Some((la.triangle, lb.triangle));
+        if found.closest.is_none_or(|b: Witness<T>| w.distance < b.distance) {
+            found.closest = Some(w);
+            found.closest_triangles = triangles;
         }
+        // Within the contact distance (or touching: no direction): a
+        // contact, kept if it is the closest so far.
         let (Ok(n), true) = (dir, cp.distance > contact_distance) else {
-            self.closest = Some((la.triangle, lb.triangle));
-            return Some(StepResult::Touching {
-                witness: w,
-                normal: dir.ok(),
-            });
+            if found.touching.is_none_or(|b: Witness<T>| w.distance < b.distance) {
+                found.touching = Some(w);
+                found.touching_triangles = triangles;
+                found.touching_normal = dir.ok();
+            }
+            return;
         };
+        if found.touching.is_some() {
+            // The search for the closest pair needs no steps.
+            return;
+        }
         let nv = n.get();
         self.stats.bounds += 2;
         let mu = rates.leaves(pa, pb, (la, lb), n);
@@ -338,9 +351,8 @@ impl<T: Float> MeshPair<'_, T> {
         self.seeds.insert(step.to_f64(), (i as u32, j as u32));
         if step < *best {
             *best = step;
-            *normal = Some(n);
+            found.normal = Some(n);
         }
-        None
     }
 }
 
