@@ -120,7 +120,7 @@
 //!
 //! ## Distances
 //!
-//! [`triangle_triangle`] (with [`point_triangle`] and [`segment_segment`])
+//! [`try_triangle_triangle`] (with [`try_point_triangle`] and [`try_segment_segment`])
 //! gives the exact Euclidean distance of two triangles with witness points,
 //! and [`gjk_distance`] the distance of two convex bodies given by a
 //! [`SupportMap`], such as a [`ConvexPolytope`] placed by a [`Pose`]. GJK's
@@ -160,7 +160,7 @@
 //! The core's one dependency is [robust](https://crates.io/crates/robust)
 //! (Shewchuk's adaptive predicates, `no_std` and allocation-free): the exact
 //! fallback of the filtered orientation predicates with which
-//! [`triangle_triangle`] decides meeting.
+//! [`try_triangle_triangle`] decides meeting.
 
 #![cfg_attr(not(feature = "std"), no_std)]
 #![cfg_attr(docsrs, feature(doc_cfg))]
@@ -215,7 +215,9 @@ pub use bound::probe::DirectedProbe;
 pub use bvh::{BallTree, VertexTree};
 pub use error::{InputError, Quantity};
 pub use float::Float;
-pub use geometry::closest::{point_triangle, segment_segment, triangle_triangle, ClosestPoints};
+pub use geometry::closest::{
+    try_point_triangle, try_segment_segment, try_triangle_triangle, ClosestPoints,
+};
 pub use geometry::gjk::{gjk_distance, ConvexPolytope, GjkParams, GjkResult, SupportMap};
 pub use math::direction::Direction;
 pub use math::isometry::Isometry;

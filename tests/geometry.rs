@@ -22,11 +22,30 @@
 use motion_bound::reference::DoubleDouble;
 use motion_bound::testkit::triangles_intersect_exact;
 use motion_bound::{
-    gjk_distance, point_triangle, rotate_about_axis, segment_segment, triangle_triangle,
-    ConvexPolytope, Float, GjkParams, Point3, Pose, Vec3,
+    gjk_distance, rotate_about_axis, try_point_triangle, try_segment_segment,
+    try_triangle_triangle, ClosestPoints, ConvexPolytope, Float, GjkParams, Point3, Pose, Vec3,
 };
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
+
+// Every point these tests build is finite: the distance functions' typed
+// error for non-finite input is checked in their unit tests.
+fn triangle_triangle<T: Float>(a: &[Point3<T>; 3], b: &[Point3<T>; 3]) -> ClosestPoints<T> {
+    try_triangle_triangle(a, b).expect("finite points")
+}
+
+fn point_triangle<T: Float>(p: Point3<T>, t: [Point3<T>; 3]) -> ClosestPoints<T> {
+    try_point_triangle(p, t).expect("finite points")
+}
+
+fn segment_segment<T: Float>(
+    p0: Point3<T>,
+    p1: Point3<T>,
+    q0: Point3<T>,
+    q1: Point3<T>,
+) -> ClosestPoints<T> {
+    try_segment_segment(p0, p1, q0, q1).expect("finite points")
+}
 
 type Tri = [[f64; 3]; 3];
 

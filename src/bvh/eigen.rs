@@ -136,7 +136,10 @@ mod tests {
             let axes = principal_axes(a.map(|row| row.map(|x| x * scale)));
             for (e, f) in axes.iter().zip(&unit) {
                 let dot: f64 = (0..3).map(|k| e[k] * f[k]).sum();
-                assert!(dot.abs() > 1.0 - 1e-12, "scale {scale}: {e:?} against {f:?}");
+                assert!(
+                    dot.abs() > 1.0 - 1e-12,
+                    "scale {scale}: {e:?} against {f:?}"
+                );
             }
         }
     }

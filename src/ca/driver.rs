@@ -1,11 +1,9 @@
 //! The conservative-advancement loop.
 
-use crate::ca::{
-    CaError, CaOutcome, CaParams, CaReport, Contact, ContactCriterion, Witness, Work,
-};
+use crate::ca::{CaError, CaOutcome, CaParams, CaReport, Contact, ContactCriterion, Witness, Work};
 use crate::rounding::{
-    advance_down, centre_reach_up, diff_down, lever_up, placed_reach_up, pose_error_up, sum_reaches,
-    sum_up,
+    advance_down, centre_reach_up, diff_down, lever_up, placed_reach_up, pose_error_up,
+    sum_reaches, sum_up,
 };
 use crate::{Direction, Float, PreparedMotion, RigidMotion};
 
@@ -234,10 +232,10 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
                     // Time cannot advance any more (a step below its
                     // resolution) within the tolerance of the end.
                     return report(
-                CaOutcome::IterationLimit { time: t },
-                iterations,
-                stepper.work(),
-            );
+                        CaOutcome::IterationLimit { time: t },
+                        iterations,
+                        stepper.work(),
+                    );
                 }
                 t = next;
             }

@@ -10,13 +10,14 @@
 //!
 //! Degenerate input is allowed everywhere: a segment with equal ends is a
 //! point, a triangle with collinear vertices is a segment, one with equal
-//! vertices a point. With a NaN or infinite coordinate the distance is NaN
-//! (never a panic).
+//! vertices a point. A NaN or infinite coordinate is an
+//! [`InputError::NonFinite`] naming the point (never a panic, never a NaN
+//! distance).
 
 use super::intersect::triangles_meet;
 use super::predicates::points_in_exact_range;
 use super::scale::Scale;
-use crate::{Float, Point3, Vec3};
+use crate::{Float, InputError, Point3, Quantity, Vec3};
 
 /// The closest points of two sets and their distance.
 ///
@@ -105,34 +106,52 @@ impl<T: Float> Closest<T> {
 /// grows like `u / sin(angle)` rather than the `u / sin^2(angle)` of the
 /// normal equations.
 ///
+/// # Errors
+/// [`InputError::NonFinite`] with [`Quantity::Vertex`] naming the first
+/// point (`0` to `3`: `p0`, `p1`, `q0`, `q1`) with a NaN or infinite
+/// coordinate.
+///
 /// ```
-/// use motion_bound::{segment_segment, Point3};
+/// use motion_bound::{try_segment_segment, InputError, Point3, Quantity};
 /// // Two skew segments one unit apart.
-/// let c = segment_segment(
+/// let c = try_segment_segment(
 ///     Point3::new(-1.0, 0.0, 0.0), Point3::new(1.0, 0.0, 0.0),
 ///     Point3::new(0.0, -1.0, 1.0), Point3::new(0.0, 1.0, 1.0),
-/// );
+/// )?;
 /// assert_eq!(c.distance, 1.0);
 /// assert_eq!(c.on_a, Point3::new(0.0, 0.0, 0.0));
 /// assert_eq!(c.on_b, Point3::new(0.0, 0.0, 1.0));
 /// // Overlapping parallel segments: any pair across the overlap is closest.
-/// let c = segment_segment(
+/// let c = try_segment_segment(
 ///     Point3::new(0.0, 0.0, 0.0), Point3::new(2.0, 0.0, 0.0),
 ///     Point3::new(1.0, 3.0, 0.0), Point3::new(5.0, 3.0, 0.0),
-/// );
+/// )?;
 /// assert_eq!(c.distance, 3.0);
+/// let bad = try_segment_segment(Point3::ORIGIN, Point3::ORIGIN, Point3::new(f64::NAN, 0.0, 0.0), Point3::ORIGIN);
+/// assert_eq!(bad, Err(InputError::NonFinite(Quantity::Vertex(2))));
+/// # Ok::<(), InputError>(())
 /// ```
-#[must_use]
-pub fn segment_segment<T: Float>(
+pub fn try_segment_segment<T: Float>(
     p0: Point3<T>,
     p1: Point3<T>,
     q0: Point3<T>,
     q1: Point3<T>,
-) -> ClosestPoints<T> {
-    segment_segment_vec(p0.to_vec3(), p1.to_vec3(), q0.to_vec3(), q1.to_vec3()).into()
+) -> Result<ClosestPoints<T>, InputError> {
+    check_points(&[p0, p1, q0, q1])?;
+    Ok(segment_segment_vec(p0.to_vec3(), p1.to_vec3(), q0.to_vec3(), q1.to_vec3()).into())
 }
 
-/// [`segment_segment`] on the crate's vectors.
+/// [`InputError::NonFinite`] naming the first point with a NaN or infinite
+/// coordinate, by its position in `points`.
+fn check_points<T: Float>(points: &[Point3<T>]) -> Result<(), InputError> {
+    match points.iter().position(|p| !p.to_vec3().is_finite()) {
+        Some(k) => Err(InputError::NonFinite(Quantity::Vertex(k))),
+        None => Ok(()),
+    }
+}
+
+/// [`try_segment_segment`] on the crate's vectors (a NaN distance for
+/// non-finite input).
 pub(crate) fn segment_segment_vec<T: Float>(
     p0: Vec3<T>,
     p1: Vec3<T>,
@@ -159,24 +178,34 @@ pub(crate) fn segment_segment_vec<T: Float>(
 /// rounding too.
 /// `on_a` is `p` itself, `on_b` the point on the triangle.
 ///
+/// # Errors
+/// [`InputError::NonFinite`] with [`Quantity::Vertex`] naming the first
+/// point with a NaN or infinite coordinate (`0` for `p`, `1` to `3` for the
+/// triangle's corners).
+///
 /// ```
-/// use motion_bound::{point_triangle, Point3};
+/// use motion_bound::{try_point_triangle, Point3};
 /// let tri = [Point3::new(0.0, 0.0, 0.0), Point3::new(2.0, 0.0, 0.0), Point3::new(0.0, 2.0, 0.0)];
-/// let c = point_triangle(Point3::new(0.5, 0.5, 3.0), tri);
+/// let c = try_point_triangle(Point3::new(0.5, 0.5, 3.0), tri)?;
 /// assert_eq!((c.distance, c.on_b), (3.0, Point3::new(0.5, 0.5, 0.0)));
 /// // Beyond the hypotenuse: the closest point is on that edge.
-/// let c = point_triangle(Point3::new(2.0, 2.0, 0.0), tri);
+/// let c = try_point_triangle(Point3::new(2.0, 2.0, 0.0), tri)?;
 /// assert_eq!(c.on_b, Point3::new(1.0, 1.0, 0.0));
 /// // A degenerate (collinear) triangle is its longest edge.
 /// let flat = [Point3::new(0.0, 0.0, 0.0), Point3::new(1.0, 0.0, 0.0), Point3::new(3.0, 0.0, 0.0)];
-/// assert_eq!(point_triangle(Point3::new(2.0, 1.0, 0.0), flat).distance, 1.0);
+/// assert_eq!(try_point_triangle(Point3::new(2.0, 1.0, 0.0), flat)?.distance, 1.0);
+/// # Ok::<(), motion_bound::InputError>(())
 /// ```
-#[must_use]
-pub fn point_triangle<T: Float>(p: Point3<T>, triangle: [Point3<T>; 3]) -> ClosestPoints<T> {
-    point_triangle_vec(p.to_vec3(), triangle.map(Point3::to_vec3)).into()
+pub fn try_point_triangle<T: Float>(
+    p: Point3<T>,
+    triangle: [Point3<T>; 3],
+) -> Result<ClosestPoints<T>, InputError> {
+    check_points(&[p, triangle[0], triangle[1], triangle[2]])?;
+    Ok(point_triangle_vec(p.to_vec3(), triangle.map(Point3::to_vec3)).into())
 }
 
-/// [`point_triangle`] on the crate's vectors.
+/// [`try_point_triangle`] on the crate's vectors (a NaN distance for
+/// non-finite input).
 pub(crate) fn point_triangle_vec<T: Float>(p: Vec3<T>, [a, b, c]: [Vec3<T>; 3]) -> Closest<T> {
     if ![p, a, b, c].iter().all(|p| p.is_finite()) {
         return Closest::non_finite(p, a);
@@ -192,8 +221,8 @@ pub(crate) fn point_triangle_vec<T: Float>(p: Vec3<T>, [a, b, c]: [Vec3<T>; 3]) 
 /// If the triangles share a point the distance is 0 and `on_a == on_b` is a
 /// common point. Otherwise the closest pair has a vertex of one triangle or
 /// lies on an edge of each, so the result is the minimum over the 6
-/// vertex-triangle pairs ([`point_triangle`]) and the 9 edge-edge pairs
-/// ([`segment_segment`]).
+/// vertex-triangle pairs ([`try_point_triangle`]) and the 9 edge-edge pairs
+/// ([`try_segment_segment`]).
 ///
 /// Meeting is decided by a triangle-triangle intersection test on orientation
 /// predicates (proper, coplanar, touching and degenerate cases alike; see
@@ -234,28 +263,41 @@ pub(crate) fn point_triangle_vec<T: Float>(p: Vec3<T>, [a, b, c]: [Vec3<T>; 3]) 
 /// `proofs/09-ca-toi.md`), only to declare contact.
 ///
 /// Degenerate (zero-area) triangles are segments or points and give their
-/// correct distance. Non-finite input gives a NaN distance.
+/// correct distance.
+///
+/// # Errors
+/// [`InputError::NonFinite`] with [`Quantity::Vertex`] naming the first
+/// corner with a NaN or infinite coordinate (`0` to `2` in `a`, `3` to `5`
+/// in `b`).
 ///
 /// ```
-/// use motion_bound::{triangle_triangle, Point3};
+/// use motion_bound::{try_triangle_triangle, InputError, Point3, Quantity};
 /// let t = |p: [[f64; 3]; 3]| p.map(Point3::from_array);
 /// let a = t([[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0]]);
 /// // Parallel, one unit above.
 /// let b = t([[1.0, 1.0, 1.0], [2.0, 1.0, 1.0], [1.0, 2.0, 1.0]]);
-/// assert_eq!(triangle_triangle(&a, &b).distance, 1.0);
+/// assert_eq!(try_triangle_triangle(&a, &b)?.distance, 1.0);
 /// // Linked like a chain: they meet although no vertex or edge pair does.
 /// let c = t([[1.0, 1.0, -2.0], [1.0, 1.0, 2.0], [1.0, -3.0, 0.0]]);
-/// let hit = triangle_triangle(&a, &c);
+/// let hit = try_triangle_triangle(&a, &c)?;
 /// assert_eq!(hit.distance, 0.0);
 /// assert_eq!(hit.on_a, hit.on_b);
+/// // A NaN corner is named, not a NaN distance.
+/// let nan = t([[1.0, 1.0, 1.0], [2.0, f64::NAN, 1.0], [1.0, 2.0, 1.0]]);
+/// assert_eq!(try_triangle_triangle(&a, &nan), Err(InputError::NonFinite(Quantity::Vertex(4))));
+/// # Ok::<(), InputError>(())
 /// ```
-#[must_use]
-pub fn triangle_triangle<T: Float>(a: &[Point3<T>; 3], b: &[Point3<T>; 3]) -> ClosestPoints<T> {
-    triangle_triangle_vec(&a.map(Point3::to_vec3), &b.map(Point3::to_vec3)).into()
+pub fn try_triangle_triangle<T: Float>(
+    a: &[Point3<T>; 3],
+    b: &[Point3<T>; 3],
+) -> Result<ClosestPoints<T>, InputError> {
+    check_points(&[a[0], a[1], a[2], b[0], b[1], b[2]])?;
+    Ok(triangle_triangle_vec(&a.map(Point3::to_vec3), &b.map(Point3::to_vec3)).into())
 }
 
-/// [`triangle_triangle`] on the crate's vectors (the mesh stepper's leaf
-/// test).
+/// [`try_triangle_triangle`] on the crate's vectors (the mesh stepper's
+/// leaf test; a NaN distance for non-finite input, which placed points of
+/// validated meshes never are).
 pub(crate) fn triangle_triangle_vec<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3]) -> Closest<T> {
     if !a.iter().chain(b.iter()).all(|p| p.is_finite()) {
         return Closest::non_finite(a[0], b[0]);
@@ -610,6 +652,38 @@ mod tests {
             Vec3::new(0.0, big, big),
         );
         assert_eq!(c.distance, big, "f32 near MAX");
+    }
+
+    /// The public functions name the first non-finite point (an earlier
+    /// version returned a NaN distance, against the crate's "never NaN").
+    #[test]
+    fn non_finite_input_is_a_typed_error_naming_the_point() {
+        use super::{try_point_triangle, try_segment_segment, try_triangle_triangle};
+        use crate::{InputError, Point3, Quantity};
+        let p = |x: f64, y: f64, z: f64| Point3::new(x, y, z);
+        let a = [p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 1.0, 0.0)];
+        let b = [p(0.0, 0.0, 1.0), p(1.0, 0.0, 1.0), p(0.0, 1.0, 1.0)];
+        let err = |k| Err(InputError::NonFinite(Quantity::Vertex(k)));
+        for (k, bad) in [f64::NAN, f64::INFINITY, -f64::INFINITY]
+            .into_iter()
+            .enumerate()
+        {
+            let mut a2 = a;
+            a2[k].y = bad;
+            assert_eq!(try_triangle_triangle(&a2, &b), err(k), "corner {k} of a");
+            let mut b2 = b;
+            b2[k].z = bad;
+            assert_eq!(
+                try_triangle_triangle(&a, &b2),
+                err(3 + k),
+                "corner {k} of b"
+            );
+            assert_eq!(try_point_triangle(a2[k], b), err(0), "the point");
+            assert_eq!(try_point_triangle(a[0], b2), err(1 + k), "a corner");
+            assert_eq!(try_segment_segment(a[0], a[1], b[0], b2[k]), err(3), "q1");
+        }
+        let ok = try_triangle_triangle(&a, &b).expect("finite");
+        assert_eq!(ok.distance, 1.0, "the finite pair");
     }
 
     #[test]

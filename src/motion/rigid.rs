@@ -339,10 +339,7 @@ impl<T: Float> RigidMotion<T> {
         );
         Self {
             centre: Point3::new(x.0, y.0, z.0),
-            centre_slack: crate::rounding::rebase_slack_up(
-                self.centre_slack,
-                [x.1, y.1, z.1],
-            ),
+            centre_slack: crate::rounding::rebase_slack_up(self.centre_slack, [x.1, y.1, z.1]),
             ..*self
         }
     }

@@ -18,9 +18,7 @@ use seeds::Seeds;
 use traversal::{slab_gap, Placed, Rates};
 
 use crate::bvh::{BallTree, Hierarchy};
-use crate::ca::{
-    CaError, CaParams, CaStep, MeshParams, StepResult, Witness, WitnessSearch, Work,
-};
+use crate::ca::{CaError, CaParams, CaStep, MeshParams, StepResult, Witness, WitnessSearch, Work};
 use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down};
 use crate::{Direction, Float, PreparedMotion};
 

@@ -324,14 +324,20 @@ impl<T: Float> MeshPair<'_, T> {
         };
         let triangles = Some((la.triangle, lb.triangle));
         let dir = Direction::try_new(cp.on_b - cp.on_a);
-        if found.closest.is_none_or(|b: Witness<T>| w.distance < b.distance) {
+        if found
+            .closest
+            .is_none_or(|b: Witness<T>| w.distance < b.distance)
+        {
             found.closest = Some(w);
             found.closest_triangles = triangles;
         }
         // Within the contact distance (or touching: no direction): a
         // contact, kept if it is the closest so far.
         let (Ok(n), true) = (dir, cp.distance > contact_distance) else {
-            if found.touching.is_none_or(|b: Witness<T>| w.distance < b.distance) {
+            if found
+                .touching
+                .is_none_or(|b: Witness<T>| w.distance < b.distance)
+            {
                 found.touching = Some(w);
                 found.touching_triangles = triangles;
                 found.touching_normal = dir.ok();
