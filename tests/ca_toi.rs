@@ -37,7 +37,13 @@ struct Tally {
     /// Of the contacts, those declared by time tolerance (a stall).
     ca_stalls: usize,
     separated: usize,
+    /// Queries ended by the work budget or the precision limit (possible
+    /// contacts at the time reached).
+    work_limits: usize,
+    precision_limits: usize,
     iterations: u64,
+    /// The most node pairs and triangle pairs one query used.
+    most_work: (u64, u64),
     violations: Vec<String>,
 }
 
@@ -52,11 +58,15 @@ impl Tally {
     ) {
         self.queries += 1;
         self.iterations += u64::from(report.iterations);
+        self.most_work.0 = self.most_work.0.max(report.work.node_pairs);
+        self.most_work.1 = self.most_work.1.max(report.work.triangle_pairs);
         self.sampled_contacts += usize::from(truth.is_some());
         let reported = report.outcome.earliest_possible_contact().map(T::to_f64);
         self.ca_contacts += usize::from(report.outcome.contact().is_some());
         match report.outcome {
             CaOutcome::Separated => self.separated += 1,
+            CaOutcome::WorkLimit { .. } => self.work_limits += 1,
+            CaOutcome::PrecisionLimit { .. } => self.precision_limits += 1,
             CaOutcome::Contact {
                 contact,
                 criterion: ContactCriterion::TimeTolerance,
@@ -84,14 +94,18 @@ impl Tally {
 
     fn assert_clean(&self, scene: &str) {
         println!(
-            "{scene}: {} queries, {} sampled contacts, {} CA contacts ({} by time tolerance), {} CA separated, {} sampled without contact, {:.2} iterations per query, {} violations",
+            "{scene}: {} queries, {} sampled contacts, {} CA contacts ({} by time tolerance), {} CA separated, {} work limits, {} precision limits, {} sampled without contact, {:.2} iterations per query, at most {} node pairs and {} triangle pairs per query, {} violations",
             self.queries,
             self.sampled_contacts,
             self.ca_contacts,
             self.ca_stalls,
             self.separated,
+            self.work_limits,
+            self.precision_limits,
             self.queries - self.sampled_contacts,
             self.iterations as f64 / self.queries.max(1) as f64,
+            self.most_work.0,
+            self.most_work.1,
             self.violations.len()
         );
         assert!(

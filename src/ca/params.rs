@@ -106,8 +106,8 @@ pub struct CaParams<T> {
     pub one_sided: bool,
     /// The most work one query may do, over all its iterations: node pairs
     /// and triangle pairs of a [`MeshPair`](crate::ca::MeshPair)'s
-    /// traversal (steppers that do not count work ignore it). When either
-    /// runs out the query ends with
+    /// traversal (steppers that do not count work ignore it); a query never
+    /// does more than either count. When either runs out the query ends with
     /// [`CaOutcome::WorkLimit`](crate::ca::CaOutcome::WorkLimit) at the
     /// time reached (or, when the step has already found the bodies within
     /// the contact distance, with that contact and the closest pair found
@@ -136,11 +136,14 @@ impl<T: Float> Default for CaParams<T> {
 }
 
 impl<T: Float> CaParams<T> {
-    /// The default [`work_budget`](Self::work_budget): 100,000 node pairs and
-    /// 20,000 triangle pairs, about 50 ms of the slowest kind of step on
-    /// meshes of 100,000 triangles (`docs/performance.md`, "Bounded cost"),
-    /// and about fifty times what a query of the seed's Table 1 uses.
-    pub const DEFAULT_WORK_BUDGET: Work = Work::new(100_000, 20_000);
+    /// The default [`work_budget`](Self::work_budget): 50,000 node pairs and
+    /// 10,000 triangle pairs, at most about 50 ms on meshes of 100,000
+    /// triangles (about 1 us a node pair where the trees miss the cache,
+    /// 0.6 us where they do not: `docs/performance.md`, "Bounded cost"), and
+    /// more than ten times what a query of the seed's Table 1 uses. Fast
+    /// spins of thin bodies (40 rad per unit time) need up to about 100,000
+    /// node pairs.
+    pub const DEFAULT_WORK_BUDGET: Work = Work::new(50_000, 10_000);
 
     /// With another work budget ([`Work::UNLIMITED`] for none).
     #[must_use]

@@ -208,6 +208,9 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         self.closest = None;
         let seed = core::mem::take(&mut self.seeds);
         for &(i, j) in &seed.pairs[..seed.len] {
+            if self.out_of_work(start, budget) {
+                break;
+            }
             let (i, j) = (i as usize, j as usize);
             let corners = (pa.corners(&self.a.leaves[i]), pb.corners(&self.b.leaves[j]));
             self.triangle_pair(
@@ -255,7 +258,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 best = best.min_nan(key);
                 break;
             }
-            if self.work_since(start).exceeds(budget) {
+            if self.out_of_work(start, budget) {
                 // Out of work: a contact already found stands (its witness
                 // the closest pair so far); anything else is undecided.
                 if found.touching.is_some() {
@@ -395,13 +398,13 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
 }
 
 impl<T: Float> MeshPair<'_, T> {
-    /// The work done since the counters read `start`.
+    /// Whether the work since the counters read `start` has used up either
+    /// count of `budget`: checked before every node pair (which measures at
+    /// most one triangle pair), so a step never does more than its budget.
     #[inline]
-    fn work_since(&self, start: TraversalStats) -> Work {
-        Work::new(
-            self.stats.node_pairs - start.node_pairs,
-            self.stats.triangle_pairs - start.triangle_pairs,
-        )
+    fn out_of_work(&self, start: TraversalStats, budget: Work) -> bool {
+        self.stats.node_pairs - start.node_pairs >= budget.node_pairs
+            || self.stats.triangle_pairs - start.triangle_pairs >= budget.triangle_pairs
     }
 }
 
