@@ -4,7 +4,7 @@
 //! `arbitrary`-decoded targets is decoded again (as libFuzzer's
 //! `fuzz_target!` does, with `arbitrary_take_rest`) and compared with the
 //! intended value, so a change of `arbitrary`'s byte format or of the input
-//! types is caught here. The `toi` and `gjk` targets take raw bytes: their
+//! types is caught here. The `toi`, `gjk` and `far` targets take raw bytes: their
 //! seeds are written as they are.
 
 use std::fmt::Debug;
@@ -87,5 +87,6 @@ fn main() {
     // The `toi` and `gjk` targets read raw bytes (`motion_bound_fuzz::Bytes`).
     count += write_raw("toi", seeds::toi_seeds());
     count += write_raw("gjk", seeds::gjk_seeds());
+    count += write_raw("far", seeds::far_seeds());
     println!("wrote {count} seeds");
 }

@@ -860,3 +860,58 @@ pub fn gjk_seeds() -> Vec<(String, Vec<u8>)> {
     }
     out
 }
+
+/// Seeds of the `far` target (raw bytes as its `Bytes` reader takes them):
+/// the fly-by far from the origin and at extreme scales, in both
+/// precisions, with the default-like budgets.
+#[must_use]
+pub fn far_seeds() -> Vec<(String, Vec<u8>)> {
+    /// Two bytes for `v` in `[lo, hi]`, as `Bytes::range` reads them.
+    fn range(out: &mut Vec<u8>, v: f64, lo: f64, hi: f64) {
+        let k = (((v - lo) / (hi - lo)) * 65535.0).round() as u16;
+        out.extend(k.to_le_bytes());
+    }
+    /// Name, precision (0 `f32`, 1 `f64`), subdivisions, offset exponent,
+    /// offset mantissas, scale byte (as `i8`), contact choice.
+    type Far = (&'static str, u8, u8, u8, [f64; 3], i8, u8);
+    let scenes: [Far; 6] = [
+        ("f32-at-1e7", 0, 1, 7, [1.0, 1.0, 1.0], 0, 0),
+        (
+            "f32-at-3e5-mixed-signs",
+            0,
+            2,
+            5,
+            [3.0 / 10.0, -1.0, 0.5],
+            0,
+            0,
+        ),
+        ("f64-at-1e16", 1, 1, 16, [1.0, -1.0, 1.0], 0, 0),
+        ("f64-tiny-scale", 1, 1, 0, [0.0, 0.0, 0.0], -128, 1),
+        ("f64-huge-scale", 1, 1, 3, [0.5, 0.5, 0.5], 120, 3),
+        ("f32-tiny-scale", 0, 0, 0, [0.0, 0.0, 0.0], -100, 0),
+    ];
+    scenes
+        .iter()
+        .map(|&(name, precision, subdivisions, exp, m, scale, contact)| {
+            let mut out = vec![precision, subdivisions, exp];
+            for x in m {
+                range(&mut out, x.clamp(-1.0, 1.0), -1.0, 1.0);
+                out.push(1); // not zeroed
+            }
+            out.push(scale as u8);
+            for (v, half) in [
+                ([-1.3, 0.1, 0.0], 1.6),
+                ([2.6, 0.0, 0.0], 3.0),
+                ([0.0, 3.0, 1.5], 20.0),
+                ([0.3, 0.0, 0.0], 5.0),
+            ] {
+                for x in v {
+                    range(&mut out, x, -half, half);
+                }
+            }
+            out.push(contact);
+            out.extend([255, 255]); // budget: 10,200 node pairs, 2,040 triangle pairs
+            (name.to_string(), out)
+        })
+        .collect()
+}
