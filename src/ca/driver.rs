@@ -70,7 +70,8 @@ pub trait CaStep<T: Float> {
     /// that never decreases between the steps of a query): what
     /// [`time_of_impact`] charges to the query's
     /// [`work_budget`](CaParams::work_budget) and reports in
-    /// [`CaReport::work`]. The default counts nothing.
+    /// [`CaReport::work`]. The default counts nothing; a stepper that wraps
+    /// another should forward it (else each step gets the whole budget).
     fn work(&self) -> Work {
         Work::ZERO
     }

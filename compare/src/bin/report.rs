@@ -37,7 +37,9 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
-use motion_bound::ca::{time_of_impact, BoundChoice, CaParams, CaStep, MeshPair, StepResult};
+use motion_bound::ca::{
+    time_of_impact, BoundChoice, CaParams, CaStep, MeshPair, StepResult, Work,
+};
 use motion_bound::reference::{exact, exact_sup_signed};
 use motion_bound::scenes::TorusKnotSize;
 use motion_bound::testkit::ground_truth::{intersect_at, MeshRef};
@@ -518,6 +520,10 @@ impl CaStep<f64> for Recording<'_> {
     ) -> StepResult<f64> {
         self.times.push(t);
         self.inner.step(t, a, b, params)
+    }
+
+    fn work(&self) -> Work {
+        self.inner.work()
     }
 }
 
