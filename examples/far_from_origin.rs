@@ -123,7 +123,13 @@ fn main() {
     bunnies::<f64>("bunny f64 scaled by 1e-300", 0.0, 1e-300);
     let sphere = icosphere::<f32>(0.5, 3).expect("sphere");
     for x in [1e3, 1e6] {
-        row(&format!("icosphere f32 at offset {x:e}"), &sphere, &sphere, x, 1.0);
+        row(
+            &format!("icosphere f32 at offset {x:e}"),
+            &sphere,
+            &sphere,
+            x,
+            1.0,
+        );
     }
     // 100,000 copies of one triangle against the bunny.
     let (mut v, mut t) = (Vec::new(), Vec::new());

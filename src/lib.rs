@@ -85,6 +85,14 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
+//! Every query runs in the pair's own frame (the world translated to body
+//! A's start), so its precision does not depend on where the pair is; its
+//! work is bounded ([`ca::CaParams::work_budget`]); and an undecided query
+//! says why ([`ca::CaOutcome::IterationLimit`], [`ca::CaOutcome::WorkLimit`],
+//! [`ca::CaOutcome::PrecisionLimit`]), always with a time before which no
+//! contact is certified. A contact's witness is the closest triangle pair
+//! ([`ca::WitnessSearch`]).
+//!
 //! ## Scenes
 //!
 //! [`scene::Scene`] holds many bodies over one frame and answers every

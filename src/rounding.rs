@@ -328,6 +328,7 @@ pub(crate) fn resolution_up<T: Float>(pose_err_a: T, pose_err_b: T, reach_sum: T
 /// (section "Summary") is more than `1/256` of the body, its balls and
 /// speed bounds are dominated by it, and a mesh query reports
 /// [`CaOutcome::PrecisionLimit`](crate::ca::CaOutcome::PrecisionLimit) at once.
+#[cfg(feature = "alloc")]
 #[inline]
 #[must_use]
 pub(crate) fn least_resolved_reach<T: Float>() -> T {

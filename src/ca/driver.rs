@@ -301,5 +301,6 @@ pub(crate) fn precision_limit<T: Float>(
         return None;
     }
     let resolution = crate::rounding::resolution_up(err.0, err.1, reach.0 + reach.1);
-    (!(resolution < clearance)).then_some(StepResult::PrecisionLimit { resolution })
+    (resolution >= clearance || resolution.is_nan())
+        .then_some(StepResult::PrecisionLimit { resolution })
 }

@@ -37,9 +37,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
-use motion_bound::ca::{
-    time_of_impact, BoundChoice, CaParams, CaStep, MeshPair, StepResult, Work,
-};
+use motion_bound::ca::{time_of_impact, BoundChoice, CaParams, CaStep, MeshPair, StepResult, Work};
 use motion_bound::reference::{exact, exact_sup_signed};
 use motion_bound::scenes::TorusKnotSize;
 use motion_bound::testkit::ground_truth::{intersect_at, MeshRef};

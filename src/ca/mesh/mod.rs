@@ -188,7 +188,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         // down to every triangle pair), and a zero step ends the query
         // (`proofs/09-ca-toi.md`, Lemma 9.6).
         let resolution = resolution_up(pa.err, pb.err, pa.reach + pb.reach);
-        let limited = !(resolution < clear);
+        let limited = resolution >= clear || resolution.is_nan();
         // Bodies so small that their squared lengths underflow: their balls
         // and bounds are the underflow allowances' (section "Resolution").
         let least = least_resolved_reach::<T>();
