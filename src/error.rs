@@ -28,6 +28,8 @@ pub enum Quantity {
     LocalCentre,
     /// A motion's duration.
     Duration,
+    /// A shape's extent: a half height or a half extent.
+    Extent,
 }
 
 /// Why an input was rejected.
@@ -63,6 +65,8 @@ pub enum InputError {
     /// ([`BallTree::try_with_piece_length`](crate::BallTree::try_with_piece_length))
     /// that is NaN, zero or negative.
     PieceLength,
+    /// A cylinder or cone of zero height (a disc).
+    ZeroHeight,
     /// A triangle names a vertex that does not exist.
     TriangleIndexOutOfRange {
         /// The triangle's position in the list.
@@ -86,6 +90,7 @@ impl fmt::Display for Quantity {
             Self::Orientation => f.write_str("orientation"),
             Self::LocalCentre => f.write_str("local rotation centre"),
             Self::Duration => f.write_str("duration"),
+            Self::Extent => f.write_str("extent"),
         }
     }
 }
@@ -106,6 +111,7 @@ impl fmt::Display for InputError {
             Self::NonPositiveDuration => f.write_str("duration is not positive"),
             Self::NoTriangles => f.write_str("no triangle"),
             Self::PieceLength => f.write_str("a piece length that is not positive"),
+            Self::ZeroHeight => f.write_str("a cylinder or cone of zero height"),
             Self::TriangleIndexOutOfRange { triangle, index } => {
                 write!(
                     f,

@@ -243,6 +243,7 @@ pub use motion::interval::TimeInterval;
 pub use motion::rigid::RigidMotion;
 pub use shape::ball::BoundingBall;
 pub use shape::body::{BodySummary, VertexSet};
+pub use shape::convex::{Convex, ConvexKind};
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]

@@ -48,6 +48,10 @@ pub mod one_sided {}
 #[doc = include_str!("../proofs/11-scene.md")]
 pub mod scene {}
 
+/// Convex shapes as a core and a radius: supports, gaps and bounds.
+#[doc = include_str!("../proofs/12-shapes.md")]
+pub mod shapes {}
+
 /// Floating point: every bound is an upper bound for its float inputs.
 #[doc = include_str!("../proofs/floating-point.md")]
 pub mod floating_point {}

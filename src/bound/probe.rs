@@ -1,14 +1,14 @@
 //! Directed bounds for one motion along one direction, for many bodies:
-//! vertex sets, bounding balls, body summaries.
+//! vertex sets, bounding balls, body summaries, convex shapes.
 
 use crate::bound::projection::{nevq_rate_from, nevq_speed_from, Projection};
 use crate::bound::scan::{arc_scan, arc_signed_scan, full_turn_scan};
 use crate::rounding::{
     assemble, evq_rotational_up, lever_up, nevq_rotational_up, one_sided_decision_slack,
-    one_sided_up, sum_up,
+    one_sided_up, radius_up, sum_up,
 };
 use crate::{
-    BodySummary, BoundKind, BoundingBall, Direction, Float, PreparedMotion, SweptArc, Vec3,
+    BodySummary, BoundKind, BoundingBall, Convex, Direction, Float, PreparedMotion, SweptArc, Vec3,
     VertexSet,
 };
 
@@ -237,6 +237,109 @@ impl<T: Float> DirectedProbe<T> {
         one_sided_up(self.p.a, self.p.a_mag, rot, rot.abs(), margin).min_nan(nevq)
     }
 
+    /// The one-sided speed bound of kind `kind` for every point of a convex
+    /// shape (see [`ball_rate`](Self::ball_rate)): its core's cover of
+    /// points and balls, each dilated by the shape's radius
+    /// (`proofs/12-shapes.md`, "Bounds").
+    ///
+    /// ```
+    /// use motion_bound::{BoundKind, Convex, Direction, PreparedMotion, RigidMotion};
+    /// // A capsule standing along y, moving along x at 1 and turning about z.
+    /// let capsule = Convex::try_capsule(1.0, 0.25)?;
+    /// let m = RigidMotion::try_from_arrays([0.0; 3], [1.0, 0.0, 0.0], [0.0, 0.0, 0.5])?;
+    /// let probe = PreparedMotion::new(&m).probe(Direction::X);
+    /// // The top end turns along -x, the bottom end along +x, at up to
+    /// // 0.5 rad/s at lever 1.25: the rate is at most 1 + 0.625.
+    /// let rate = probe.convex_rate(&capsule, BoundKind::Evq);
+    /// assert!(rate >= 1.0 + 0.5 * 0.25 && rate <= 1.0 + 0.625 + 1e-12);
+    /// # Ok::<(), motion_bound::InputError>(())
+    /// ```
+    #[must_use]
+    pub fn convex_rate(&self, shape: &Convex<'_, T>, kind: BoundKind) -> T {
+        self.convex_bound(shape, kind, Self::dilated_rate)
+    }
+
+    /// The (absolute) speed bound of kind `kind` for every point of a
+    /// convex shape (see [`ball_speed`](Self::ball_speed) and
+    /// [`convex_rate`](Self::convex_rate)).
+    #[must_use]
+    pub fn convex_speed(&self, shape: &Convex<'_, T>, kind: BoundKind) -> T {
+        self.convex_bound(shape, kind, Self::dilated_speed)
+    }
+
+    /// `bound` over the shape's cover: the main group dilated by its own
+    /// radius plus the shape's, and a cone's apex by the shape's radius.
+    fn convex_bound(
+        &self,
+        shape: &Convex<'_, T>,
+        kind: BoundKind,
+        bound: fn(&Self, &[[T; 3]], T, T, BoundKind) -> T,
+    ) -> T {
+        let g = shape.bound_groups();
+        let points = g.points();
+        let r_hat = points
+            .iter()
+            .map(|p| p[0] * p[0] + p[1] * p[1] + p[2] * p[2])
+            .fold(T::ZERO, T::max_nan);
+        let main = bound(
+            self,
+            points,
+            radius_up(r_hat),
+            dilation_up(g.dilation, shape.radius()),
+            kind,
+        );
+        match g.second {
+            Some(p) => {
+                let r = radius_up(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+                main.max_nan(bound(self, &[p], r, shape.radius(), kind))
+            }
+            None => main,
+        }
+    }
+
+    /// [`ball_rate`](Self::ball_rate) over the balls of radius `dilation`
+    /// about `points` (offsets from the body origin within `r_hat`): the
+    /// signed extremal over the centres, plus the rim's `|c| dilation`.
+    fn dilated_rate(&self, points: &[[T; 3]], r_hat: T, dilation: T, kind: BoundKind) -> T {
+        let lever = lever_up(r_hat, self.offset_up);
+        let nevq = self.nevq_rate(lever_up(sum_up(r_hat, dilation), self.offset_up));
+        if kind == BoundKind::Nevq || !self.usable || points.is_empty() {
+            return nevq;
+        }
+        let s = self.signed_extremal(points, lever);
+        let margin =
+            evq_rotational_up(self.p.c_norm, T::ZERO, self.arc.theta_m, self.p.w_l1, lever)
+                + nevq_rotational_up(self.p.c_norm, self.p.w_l1, dilation);
+        let margin = self.with_frame_margin(margin, lever + dilation);
+        let rot = self.p.c_norm * s;
+        one_sided_up(self.p.a, self.p.a_mag, rot, rot.abs(), margin).min_nan(nevq)
+    }
+
+    /// [`ball_speed`](Self::ball_speed) over the balls of radius `dilation`
+    /// about `points` (as [`dilated_rate`](Self::dilated_rate)).
+    fn dilated_speed(&self, points: &[[T; 3]], r_hat: T, dilation: T, kind: BoundKind) -> T {
+        let linear = self.p.linear_up();
+        let nevq = nevq_speed_from(&self.p, lever_up(sum_up(r_hat, dilation), self.offset_up));
+        if kind == BoundKind::Nevq {
+            return nevq;
+        }
+        let Some(e_sq) = self.extremal_sq(points, T::INFINITY) else {
+            return nevq;
+        };
+        let lever = lever_up(r_hat, self.offset_up);
+        let centre = evq_rotational_up(
+            self.p.c_norm,
+            e_sq.sqrt(),
+            self.arc.theta_m,
+            self.p.w_l1,
+            lever,
+        );
+        let rim = nevq_rotational_up(self.p.c_norm, self.p.w_l1, dilation);
+        let rot = sum_up(centre, rim);
+        let rot = self.with_frame_margin(rot, lever + dilation);
+        assemble(linear, rot).min_nan(nevq)
+    }
+
     /// The one-sided NEVQ bound for points within `lever` of the rotation
     /// centre.
     #[inline]
@@ -327,5 +430,17 @@ impl<T: Float> DirectedProbe<T> {
     #[inline]
     pub(crate) fn linear_raw(&self) -> T {
         self.p.a.abs()
+    }
+}
+
+/// `a + b` rounded up (`rounding::sum_up`), exactly `a` when `b = 0`.
+#[inline]
+fn dilation_up<T: Float>(a: T, b: T) -> T {
+    if b == T::ZERO {
+        a
+    } else if a == T::ZERO {
+        b
+    } else {
+        sum_up(a, b)
     }
 }

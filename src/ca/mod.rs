@@ -26,6 +26,7 @@ mod driver;
 mod mesh;
 mod outcome;
 mod params;
+mod shapes;
 
 pub use balls::BallPair;
 pub use convex::{ConvexPair, GjkProximity, Proximity};
@@ -34,3 +35,4 @@ pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};
 pub use mesh::{MeshPair, MeshWorkspace, TraversalStats};
 pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness, Work};
 pub use params::{BoundChoice, CaError, CaParams, MeshParams, Parameter, WitnessSearch};
+pub use shapes::ShapePair;

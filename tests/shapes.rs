@@ -1,0 +1,223 @@
+//! Conservative advancement of every pair of convex shape kinds
+//! (`ShapePair`) against sampled ground truth: never late, never missed
+//! (`proofs/12-shapes.md`).
+//!
+//! The ground truth is independent of the code under test: each shape's core
+//! is tessellated *inside* itself (cylinder and cone rims by inscribed
+//! 24-gons, a polytope by every triangle of three of its vertices, segments
+//! and points as degenerate triangles), placed at each sampled time by the
+//! testkit's own quaternion placement, and the shapes are taken to touch when
+//! two of their triangles are within the sum of the radii (the exact
+//! triangle distance). An inscribed core is inside the true one, so a
+//! sampled contact is a true contact: the first sampled one is never before
+//! the true first contact, and a query reporting later, or `Separated`,
+//! fails. `SHAPES_QUERIES` sets the queries per pair of kinds (default 3).
+
+use motion_bound::ca::{time_of_impact, CaOutcome, CaParams, ShapePair};
+use motion_bound::testkit::ground_truth::place;
+use motion_bound::testkit::toi::Rng;
+use motion_bound::{try_triangle_triangle, Convex, Point3, RigidMotion, VertexSet};
+
+/// Ground-truth samples over `[0, 1]`.
+const SAMPLES: usize = 200;
+/// Sides of the inscribed polygons of rims.
+const SIDES: usize = 24;
+
+/// A shape kind: its shape, its core's inscribed triangles, its radius.
+struct Kind {
+    name: &'static str,
+    shape: Convex<'static, f64>,
+    triangles: Vec<[[f64; 3]; 3]>,
+    radius: f64,
+}
+
+fn rim(h: f64, rho: f64, y: f64) -> Vec<[f64; 3]> {
+    (0..SIDES)
+        .map(|k| {
+            let phi = k as f64 * core::f64::consts::TAU / SIDES as f64;
+            // Pulled in by 1e-12 so that rounding keeps it inside.
+            let r = rho * (1.0 - 1e-12);
+            [r * phi.cos(), y * h * (1.0 - 1e-12), r * phi.sin()]
+        })
+        .collect()
+}
+
+fn fan(centre: [f64; 3], ring: &[[f64; 3]]) -> Vec<[[f64; 3]; 3]> {
+    (0..ring.len())
+        .map(|k| [centre, ring[k], ring[(k + 1) % ring.len()]])
+        .collect()
+}
+
+fn kinds(vertices: &'static [[f64; 3]]) -> Vec<Kind> {
+    let (h, r, rho) = (0.4, 0.15, 0.35);
+    let half = [0.4, 0.25, 0.3];
+    let mut box_tris = Vec::new();
+    let c = |k: usize| [0, 1, 2].map(|i| if k >> i & 1 == 1 { half[i] } else { -half[i] });
+    for axis in 0..3 {
+        for side in 0..2 {
+            let corners: Vec<[f64; 3]> =
+                (0..8).filter(|&k| (k >> axis) & 1 == side).map(c).collect();
+            // The face's four corners: both diagonal triangulations.
+            box_tris.push([corners[0], corners[1], corners[2]]);
+            box_tris.push([corners[1], corners[2], corners[3]]);
+            box_tris.push([corners[0], corners[1], corners[3]]);
+            box_tris.push([corners[0], corners[2], corners[3]]);
+        }
+    }
+    let mut cylinder = Vec::new();
+    let (top, bottom) = (rim(h, rho, 1.0), rim(h, rho, -1.0));
+    for k in 0..SIDES {
+        let j = (k + 1) % SIDES;
+        cylinder.push([top[k], top[j], bottom[k]]);
+        cylinder.push([top[j], bottom[j], bottom[k]]);
+    }
+    cylinder.extend(fan([0.0, h, 0.0], &top));
+    cylinder.extend(fan([0.0, -h, 0.0], &bottom));
+    let mut cone = fan([0.0, h * (1.0 - 1e-12), 0.0], &bottom);
+    cone.extend(fan([0.0, -h, 0.0], &bottom));
+    let mut poly = Vec::new();
+    for i in 0..vertices.len() {
+        for j in i + 1..vertices.len() {
+            for k in j + 1..vertices.len() {
+                poly.push([vertices[i], vertices[j], vertices[k]]);
+            }
+        }
+    }
+    let set = VertexSet::try_new(vertices).expect("vertices");
+    let point = vec![[[0.0; 3]; 3]];
+    let seg = vec![[[0.0, -h, 0.0], [0.0, h, 0.0], [0.0, h, 0.0]]];
+    let k = |name, shape: Result<Convex<'static, f64>, _>, triangles, radius| Kind {
+        name,
+        shape: shape.expect("a valid shape"),
+        triangles,
+        radius,
+    };
+    vec![
+        k("ball", Convex::try_ball(r), point, r),
+        k("capsule", Convex::try_capsule(h, r), seg, r),
+        k("cuboid", Convex::try_cuboid(half), box_tris.clone(), 0.0),
+        k(
+            "rounded cuboid",
+            Convex::try_cuboid(half).and_then(|s| s.try_rounded(0.1)),
+            box_tris,
+            0.1,
+        ),
+        k(
+            "cylinder",
+            Convex::try_cylinder(h, rho),
+            cylinder.clone(),
+            0.0,
+        ),
+        k(
+            "rounded cylinder",
+            Convex::try_cylinder(h, rho).and_then(|s| s.try_rounded(0.05)),
+            cylinder,
+            0.05,
+        ),
+        k("cone", Convex::try_cone(h, rho), cone, 0.0),
+        k("polytope", Ok(Convex::polytope(set)), poly, 0.0),
+    ]
+}
+
+/// The first sampled time at which the two shapes touch (their inscribed
+/// cores within the sum of the radii).
+fn first_sampled_contact(
+    a: &Kind,
+    ma: &RigidMotion<f64>,
+    b: &Kind,
+    mb: &RigidMotion<f64>,
+) -> Option<f64> {
+    let reach = |k: &Kind| {
+        k.triangles
+            .iter()
+            .flatten()
+            .map(|p| (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt())
+            .fold(0.0, f64::max)
+    };
+    let (ra, rb) = (reach(a), reach(b));
+    for s in 0..=SAMPLES {
+        let t = s as f64 / SAMPLES as f64;
+        let (ca, cb) = (place(ma, [0.0; 3], t), place(mb, [0.0; 3], t));
+        let d = [0, 1, 2].map(|k| cb[k] - ca[k]);
+        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() > ra + rb + a.radius + b.radius {
+            continue;
+        }
+        let placed = |k: &Kind, m: &RigidMotion<f64>| -> Vec<[Point3<f64>; 3]> {
+            k.triangles
+                .iter()
+                .map(|tri| tri.map(|p| Point3::from_array(place(m, p, t))))
+                .collect()
+        };
+        let (ta, tb) = (placed(a, ma), placed(b, mb));
+        let touch = a.radius + b.radius;
+        for x in &ta {
+            for y in &tb {
+                if try_triangle_triangle(x, y).expect("finite").distance <= touch {
+                    return Some(t);
+                }
+            }
+        }
+    }
+    None
+}
+
+#[test]
+fn every_pair_of_shape_kinds_is_never_late_and_never_missed() {
+    let queries: usize = std::env::var("SHAPES_QUERIES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(3);
+    let mut rng = Rng::new(26);
+    let vertices: &'static [[f64; 3]] = Box::leak(
+        (0..8)
+            .map(|_| rng.direction().map(|x| x * rng.range(0.2, 0.45)))
+            .collect::<Vec<_>>()
+            .into_boxed_slice(),
+    );
+    let kinds = kinds(vertices);
+    let (mut pairs, mut contacts, mut sampled, mut separated) = (0, 0, 0, 0);
+    for i in 0..kinds.len() {
+        for j in i..kinds.len() {
+            let (a, b) = (&kinds[i], &kinds[j]);
+            pairs += 1;
+            for q in 0..queries {
+                // A flies at B from 1.2 to 1.6 apart, aimed within 0.6 of
+                // B's centre, both spinning.
+                let start = rng.direction().map(|x| x * rng.range(1.2, 1.6));
+                let aim = rng.direction().map(|x| x * 0.6 * rng.unit());
+                let v = [0, 1, 2].map(|k| aim[k] - start[k]);
+                let spin = [0.0, 3.0, 20.0][q % 3];
+                let wa = rng.direction().map(|x| x * spin * rng.unit());
+                let wb = rng.direction().map(|x| x * spin * 0.25 * rng.unit());
+                let ma = RigidMotion::try_from_arrays(start, v, wa).expect("motion");
+                let mb = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], wb).expect("motion");
+                let params = CaParams::default().with_contact_distance(1e-3);
+                let report =
+                    time_of_impact(&mut ShapePair::new(a.shape, b.shape), &ma, &mb, &params)
+                        .expect("a valid query");
+                let truth = first_sampled_contact(a, &ma, b, &mb);
+                let what = format!(
+                    "{} vs {} query {q}: {report:?}, sampled {truth:?}",
+                    a.name, b.name
+                );
+                let reported = report.outcome.earliest_possible_contact();
+                match (reported, truth) {
+                    (None, Some(_)) => panic!("MISSED: {what}"),
+                    (Some(t), Some(g)) => assert!(t <= g, "LATE: {what}"),
+                    _ => {}
+                }
+                contacts += usize::from(report.outcome.contact().is_some());
+                sampled += usize::from(truth.is_some());
+                separated += usize::from(matches!(report.outcome, CaOutcome::Separated));
+            }
+        }
+    }
+    println!(
+        "{pairs} pairs of kinds, {} queries: {contacts} contacts, {sampled} sampled contacts, {separated} separated; 0 missed, 0 late",
+        pairs * queries
+    );
+    assert!(
+        sampled * 2 >= pairs * queries,
+        "too few sampled contacts for power"
+    );
+}
