@@ -244,6 +244,7 @@ pub use motion::rigid::RigidMotion;
 pub use shape::ball::BoundingBall;
 pub use shape::body::{BodySummary, VertexSet};
 pub use shape::convex::{Convex, ConvexKind};
+pub use shape::half_space::HalfSpace;
 
 /// The README's examples, compiled and run as doctests.
 #[cfg(doctest)]

@@ -75,6 +75,18 @@ pub trait CaStep<T: Float> {
     fn work(&self) -> Work {
         Work::ZERO
     }
+
+    /// Whether the stepper takes these motions, checked once per query
+    /// before the first step ([`time_of_impact`] returns the error). The
+    /// default takes any.
+    ///
+    /// # Errors
+    /// The stepper's own: [`CaError::TurnedHalfSpace`] for a half-space
+    /// that turns.
+    fn check_motions(&self, a: &RigidMotion<T>, b: &RigidMotion<T>) -> Result<(), CaError> {
+        let _ = (a, b);
+        Ok(())
+    }
 }
 
 /// The first time of contact of two moving bodies over the motions' common
@@ -85,7 +97,8 @@ pub trait CaStep<T: Float> {
 ///
 /// # Errors
 /// [`CaError::InvalidParameter`] for bad parameters, [`CaError::IntervalMismatch`]
-/// when the motions' intervals differ.
+/// when the motions' intervals differ, and the stepper's own
+/// ([`CaStep::check_motions`]).
 ///
 /// ```
 /// use motion_bound::ca::{time_of_impact, BallPair, CaParams};
@@ -109,6 +122,7 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
     if motion_a.interval() != motion_b.interval() {
         return Err(CaError::IntervalMismatch);
     }
+    stepper.check_motions(motion_a, motion_b)?;
     // The pair's frame (`proofs/floating-point.md`, "Pair frame"): the world
     // translated so that A's rotation centre starts at the origin. Every
     // placement's rounding then follows the pair's own extent and motion,

@@ -22,6 +22,7 @@
 mod balls;
 mod convex;
 mod driver;
+mod half_space;
 #[cfg(feature = "alloc")]
 mod mesh;
 mod outcome;
@@ -31,6 +32,7 @@ mod shapes;
 pub use balls::BallPair;
 pub use convex::{ConvexPair, GjkProximity, Proximity};
 pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};
+pub use half_space::HalfSpacePair;
 #[cfg(feature = "alloc")]
 pub use mesh::{MeshPair, MeshWorkspace, TraversalStats};
 pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness, Work};

@@ -351,6 +351,11 @@ pub enum CaError {
     /// An input was rejected by the core (a motion restricted to a
     /// sub-interval, a bounding ball, a vertex set).
     Input(crate::InputError),
+    /// A half-space's motion has a start orientation or an angular
+    /// velocity: half-spaces may only translate (a turning plane sweeps
+    /// unboundedly far from its rotation centre). Give its normal in the
+    /// world frame.
+    TurnedHalfSpace,
 }
 
 impl fmt::Display for CaError {
@@ -359,6 +364,9 @@ impl fmt::Display for CaError {
             Self::InvalidParameter(p) => write!(f, "parameter out of range: {p}"),
             Self::IntervalMismatch => f.write_str("the two motions have different intervals"),
             Self::Input(e) => write!(f, "invalid input: {e}"),
+            Self::TurnedHalfSpace => {
+                f.write_str("a half-space may only translate (no start orientation, no spin)")
+            }
         }
     }
 }

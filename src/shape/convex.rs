@@ -179,6 +179,12 @@ impl<'a, T: Float> Convex<'a, T> {
         }
     }
 
+    /// The body origin alone (a ball of radius zero): what a half-space's
+    /// plane is seen from along its normal.
+    pub(crate) fn point() -> Self {
+        Self::new(Core::Point, T::ZERO, false)
+    }
+
     /// A ball of radius `radius` centred at the body origin.
     ///
     /// # Errors

@@ -4,3 +4,4 @@
 pub(crate) mod ball;
 pub(crate) mod body;
 pub(crate) mod convex;
+pub(crate) mod half_space;
