@@ -13,11 +13,15 @@
 //! the true first contact, and a query reporting later, or `Separated`,
 //! fails. `SHAPES_QUERIES` sets the queries per pair of kinds (default 3).
 
-use motion_bound::ca::{time_of_impact, CaError, CaOutcome, CaParams, HalfSpacePair, ShapePair};
+use motion_bound::ca::{
+    time_of_impact, CaError, CaOutcome, CaParams, HalfSpacePair, MeshShapePair, ShapePair,
+};
+use motion_bound::scenes::{torus, TorusKnot};
 use motion_bound::testkit::ground_truth::place;
 use motion_bound::testkit::toi::Rng;
 use motion_bound::{
-    try_triangle_triangle, Convex, HalfSpace, Point3, RigidMotion, Vec3, VertexSet,
+    try_triangle_triangle, BallTree, Convex, HalfSpace, Point3, RigidMotion, TriMesh, Vec3,
+    VertexSet,
 };
 
 /// Ground-truth samples over `[0, 1]`.
@@ -340,4 +344,112 @@ fn every_shape_kind_against_a_moving_ground_is_never_late_and_never_missed() {
         &CaParams::default(),
     );
     assert_eq!(r.err(), Some(CaError::TurnedHalfSpace), "a spinning ground");
+}
+
+/// A mesh as a `Kind` (its triangles exactly, no radius).
+fn mesh_kind(name: &'static str, mesh: &TriMesh<f64>) -> Kind {
+    Kind {
+        name,
+        shape: Convex::try_ball(0.0).expect("unused"),
+        triangles: mesh.triangle_corners().collect(),
+        radius: 0.0,
+    }
+}
+
+#[test]
+fn meshes_against_every_shape_kind_and_the_ground_are_never_late_and_never_missed() {
+    let queries: usize = std::env::var("SHAPES_QUERIES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(3)
+        * 2;
+    let mut rng = Rng::new(28);
+    let vertices: &'static [[f64; 3]] = Box::leak(
+        (0..8)
+            .map(|_| rng.direction().map(|x| x * rng.range(0.2, 0.45)))
+            .collect::<Vec<_>>()
+            .into_boxed_slice(),
+    );
+    let ring = torus::<f64>(0.5, 0.12, 24, 8).expect("ring");
+    let knot = TorusKnot::TREFOIL.mesh::<f64>(48, 6).expect("knot");
+    let (mut contacts, mut sampled, mut n) = (0, 0, 0);
+    for (name, mesh) in [("ring", &ring), ("knot", &knot)] {
+        let tree = BallTree::try_from_mesh(mesh).expect("tree");
+        let as_kind = mesh_kind(name, mesh);
+        for kind in &kinds(vertices) {
+            for q in 0..queries {
+                let start = rng.direction().map(|x| x * rng.range(1.2, 1.6));
+                let aim = rng.direction().map(|x| x * 0.6 * rng.unit());
+                let v = [0, 1, 2].map(|k| aim[k] - start[k]);
+                let spin = [0.0, 3.0, 20.0][q % 3];
+                let wa = rng.direction().map(|x| x * spin * 0.25 * rng.unit());
+                let wb = rng.direction().map(|x| x * spin * rng.unit());
+                // The mesh is body A (turning in place), the shape flies in.
+                let ma = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], wa).expect("motion");
+                let mb = RigidMotion::try_from_arrays(start, v, wb).expect("motion");
+                let params = CaParams::default().with_contact_distance(1e-3);
+                let report = time_of_impact(
+                    &mut MeshShapePair::new(&tree, kind.shape),
+                    &ma,
+                    &mb,
+                    &params,
+                )
+                .expect("a valid query");
+                let truth = first_sampled_contact(&as_kind, &ma, kind, &mb);
+                let what = format!(
+                    "{name} vs {} query {q}: {report:?}, sampled {truth:?}",
+                    kind.name
+                );
+                match (report.outcome.earliest_possible_contact(), truth) {
+                    (None, Some(_)) => panic!("MISSED: {what}"),
+                    (Some(t), Some(g)) => assert!(t <= g, "LATE: {what}"),
+                    _ => {}
+                }
+                contacts += usize::from(report.outcome.contact().is_some());
+                sampled += usize::from(truth.is_some());
+                n += 1;
+            }
+        }
+        // The mesh thrown on a rising ground.
+        for q in 0..queries * 4 {
+            let m = [0.0, 1.0, 0.0];
+            let ground = HalfSpace::try_new(Vec3::from_array(m)).expect("normal");
+            let mg =
+                RigidMotion::try_from_arrays([0.0; 3], [0.0, 0.2, 0.0], [0.0; 3]).expect("ground");
+            let start = [
+                rng.range(-1.0, 1.0),
+                rng.range(0.8, 1.5),
+                rng.range(-1.0, 1.0),
+            ];
+            let v = [
+                rng.range(-1.0, 1.0),
+                -rng.range(0.5, 3.0),
+                rng.range(-1.0, 1.0),
+            ];
+            let w = rng
+                .direction()
+                .map(|x| x * [0.0, 3.0, 20.0][q % 3] * rng.unit());
+            let ma = RigidMotion::try_from_arrays(start, v, w).expect("motion");
+            let params = CaParams::default().with_contact_distance(1e-3);
+            let report = time_of_impact(
+                &mut MeshShapePair::with_half_space(&tree, ground),
+                &ma,
+                &mg,
+                &params,
+            )
+            .expect("a valid query");
+            let truth = first_sampled_landing(&as_kind, &ma, &mg, m);
+            let what = format!("{name} on the ground query {q}: {report:?}, sampled {truth:?}");
+            match (report.outcome.earliest_possible_contact(), truth) {
+                (None, Some(_)) => panic!("MISSED: {what}"),
+                (Some(t), Some(g)) => assert!(t <= g, "LATE: {what}"),
+                _ => {}
+            }
+            contacts += usize::from(report.outcome.contact().is_some());
+            sampled += usize::from(truth.is_some());
+            n += 1;
+        }
+    }
+    println!("{n} mesh queries: {contacts} contacts, {sampled} sampled; 0 missed, 0 late");
+    assert!(sampled * 2 >= n, "too few sampled contacts for power");
 }

@@ -34,7 +34,7 @@ pub use convex::{ConvexPair, GjkProximity, Proximity};
 pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};
 pub use half_space::HalfSpacePair;
 #[cfg(feature = "alloc")]
-pub use mesh::{MeshPair, MeshWorkspace, TraversalStats};
+pub use mesh::{MeshPair, MeshShapePair, MeshWorkspace, TraversalStats};
 pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness, Work};
 pub use params::{BoundChoice, CaError, CaParams, MeshParams, Parameter, WitnessSearch};
 pub use shapes::ShapePair;

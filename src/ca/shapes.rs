@@ -53,9 +53,9 @@ impl<'a, T: Float> ShapePair<'a, T> {
 /// A core placed by a pose, as a support map for GJK. Its slack is not
 /// given (zero): GJK's lower bound is not used, the gap is certified by
 /// [`certified_gap`].
-struct PlacedCore<'s, 'a, T> {
-    shape: &'s Convex<'a, T>,
-    pose: &'s Pose<T>,
+pub(crate) struct PlacedCore<'s, 'a, T> {
+    pub(crate) shape: &'s Convex<'a, T>,
+    pub(crate) pose: &'s Pose<T>,
 }
 
 impl<T: Float> SupportMap<T> for PlacedCore<'_, '_, T> {

@@ -7,10 +7,12 @@
 
 mod queue;
 mod seeds;
+mod shape;
 mod stats;
 mod traversal;
 
 pub use queue::MeshWorkspace;
+pub use shape::MeshShapePair;
 pub use stats::TraversalStats;
 
 use queue::{NodeStep, Pending, Queued};

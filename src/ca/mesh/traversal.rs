@@ -147,7 +147,7 @@ impl<'p, T: Float> Placed<'p, T> {
         }
     }
 
-    fn leaf_speed(&self, leaf: &Leaf<T>, n: Direction<T>, kind: BoundKind) -> T {
+    pub(super) fn leaf_speed(&self, leaf: &Leaf<T>, n: Direction<T>, kind: BoundKind) -> T {
         let probe = self.motion.probe(n);
         let speed = match kind {
             BoundKind::Nevq => probe.nevq_speed_radius(leaf.r_hat),
@@ -157,7 +157,7 @@ impl<'p, T: Float> Placed<'p, T> {
     }
 
     /// The one-sided rate of a leaf's corners along `n`.
-    fn leaf_rate(&self, leaf: &Leaf<T>, n: Direction<T>, kind: BoundKind) -> T {
+    pub(super) fn leaf_rate(&self, leaf: &Leaf<T>, n: Direction<T>, kind: BoundKind) -> T {
         let rate = self
             .motion
             .probe(n)

@@ -1,0 +1,453 @@
+//! Conservative advancement of a triangle mesh against a convex shape or a
+//! half-space: one hierarchy descended against one volume.
+
+use super::queue::{NodeStep, Pending, Queued};
+use super::traversal::{Placed, PlacedNode};
+use super::{Found, MeshWorkspace, TraversalStats};
+use crate::bvh::{BallTree, Hierarchy};
+use crate::ca::driver::placement_error;
+use crate::ca::half_space::check_half_space;
+use crate::ca::shapes::PlacedCore;
+use crate::ca::{CaError, CaParams, CaStep, StepResult, Witness, WitnessSearch, Work};
+use crate::geometry::gjk::{gjk_distance, GjkParams};
+use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down, sum_up};
+use crate::{
+    BoundKind, Convex, ConvexPolytope, Direction, Float, HalfSpace, Point3, Pose, PreparedMotion,
+    RigidMotion, Vec3,
+};
+
+/// What the mesh is taken against.
+#[derive(Clone, Copy, Debug)]
+enum Other<'a, T> {
+    Shape(Convex<'a, T>),
+    Plane(HalfSpace<T>),
+}
+
+/// Conservative advancement of a triangle mesh (body A, its
+/// [`BallTree`]) against a convex shape or a half-space (body B), a
+/// [`CaStep`]: a best-first descent of the mesh's hierarchy against the one
+/// volume, with the same certified gaps, bounds, work budget, precision limit
+/// and closest-pair witness as [`MeshPair`](crate::ca::MeshPair)
+/// (`proofs/12-shapes.md`, Lemma 12.4).
+///
+/// ```
+/// use motion_bound::ca::{time_of_impact, CaParams, MeshShapePair};
+/// use motion_bound::{scenes, BallTree, Convex, HalfSpace, RigidMotion, Vec3};
+/// let ring = BallTree::try_from_mesh(&scenes::torus::<f64>(0.5, 0.1, 24, 8)?)?;
+/// // A ball falls through the ring's hole: it never touches the ring.
+/// let ball = Convex::try_ball(0.2)?;
+/// let ring_still = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3])?;
+/// let falling = RigidMotion::try_from_arrays([0.0, 0.0, 1.0], [0.0, 0.0, -2.0], [0.0; 3])?;
+/// let report = time_of_impact(&mut MeshShapePair::new(&ring, ball), &ring_still, &falling, &CaParams::default())?;
+/// assert!(report.outcome.contact().is_none());
+/// // The ring dropped on the ground lands when its lowest point (0.1 below
+/// // its centre, lying flat) reaches it.
+/// let ground = HalfSpace::try_new(Vec3::new(0.0, 0.0, 1.0))?;
+/// let dropped = RigidMotion::try_from_arrays([0.0, 0.0, 1.0], [0.0, 0.0, -2.0], [0.0; 3])?;
+/// let still = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3])?;
+/// let report = time_of_impact(&mut MeshShapePair::with_half_space(&ring, ground), &dropped, &still, &CaParams::default())?;
+/// let t = report.outcome.contact().expect("it lands").time;
+/// assert!(t <= 0.45 && t > 0.45 - 1e-4, "t = {t}");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug)]
+pub struct MeshShapePair<'a, T> {
+    mesh: &'a Hierarchy<T>,
+    other: Other<'a, T>,
+    ws: MeshWorkspace<T>,
+    stats: TraversalStats,
+}
+
+impl<'a, T: Float> MeshShapePair<'a, T> {
+    /// The mesh `mesh` (body A) against the convex shape `shape` (body B).
+    #[must_use]
+    pub fn new(mesh: &'a BallTree<T>, shape: Convex<'a, T>) -> Self {
+        Self {
+            mesh: &mesh.whole,
+            other: Other::Shape(shape),
+            ws: MeshWorkspace::new(),
+            stats: TraversalStats::default(),
+        }
+    }
+
+    /// The mesh `mesh` (body A) against the half-space `half_space` (body
+    /// B), which may translate but not turn
+    /// ([`CaError::TurnedHalfSpace`]).
+    #[must_use]
+    pub fn with_half_space(mesh: &'a BallTree<T>, half_space: HalfSpace<T>) -> Self {
+        Self {
+            other: Other::Plane(half_space),
+            ..Self::new(mesh, Convex::point())
+        }
+    }
+
+    /// With the scratch space `workspace` (taken back by
+    /// [`into_workspace`](Self::into_workspace)).
+    #[must_use]
+    pub fn with_workspace(mut self, workspace: MeshWorkspace<T>) -> Self {
+        self.ws = workspace;
+        self
+    }
+
+    /// The scratch space, for the next pair.
+    #[must_use]
+    pub fn into_workspace(self) -> MeshWorkspace<T> {
+        self.ws
+    }
+
+    /// The work done since the pair was made.
+    #[must_use]
+    pub const fn stats(&self) -> TraversalStats {
+        self.stats
+    }
+}
+
+/// Body B's side at the current time: its shape (a point for a plane), its
+/// placement, its error, and the fixed direction of a plane.
+struct Side<'s, 'a, T> {
+    shape: &'s Convex<'a, T>,
+    pose: Pose<T>,
+    err: T,
+    /// `8 (|x^|_1 + W + rho)`: the reach `gap_down` needs for B's support
+    /// (`proofs/12-shapes.md`, "Support").
+    weight: T,
+    fixed: Option<Direction<T>>,
+    motion: &'s PreparedMotion<T>,
+}
+
+impl<T: Float> Side<'_, '_, T> {
+    /// The least of `x . n` over B's exact points, as computed.
+    fn lower(&self, n: Vec3<T>) -> T {
+        self.pose.translation.dot(n)
+            - self
+                .shape
+                .core_support_value(self.pose.inverse_transform_vector(-n))
+            - self.shape.radius()
+    }
+
+    /// B's closing bound along `-n` (one-sided) or speed along `n`.
+    fn rate(&self, n: Direction<T>, kind: BoundKind, one_sided: bool) -> T {
+        if one_sided {
+            self.motion.probe(-n).convex_rate(self.shape, kind)
+        } else {
+            self.motion.probe(n).convex_speed(self.shape, kind)
+        }
+    }
+}
+
+impl<T: Float> CaStep<T> for MeshShapePair<'_, T> {
+    fn check_motions(&self, _a: &RigidMotion<T>, b: &RigidMotion<T>) -> Result<(), CaError> {
+        match self.other {
+            Other::Plane(_) => check_half_space(b),
+            Other::Shape(_) => Ok(()),
+        }
+    }
+
+    fn step(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> StepResult<T> {
+        let point = Convex::point();
+        let (shape, fixed) = match &self.other {
+            Other::Shape(s) => (*s, None),
+            Other::Plane(h) => (point, Some(-h.normal())),
+        };
+        let pa = Placed::new(self.mesh, a, t);
+        let pose = b.motion().pose_at(t);
+        let (err, reach_b) = placement_error(b.motion(), t, shape.reach());
+        let weight = T::from_u32(8)
+            * sum_up(
+                sum_up(pose.translation.norm_l1(), shape.weight()),
+                shape.radius(),
+            );
+        let side = Side {
+            shape: &shape,
+            pose,
+            err,
+            weight,
+            fixed,
+            motion: b,
+        };
+        let mut best = diff_up(b.motion().interval().end(), t);
+        let (cd, clear) = (params.contact_distance, params.clearance());
+        let resolution = resolution_up(pa.err, err, pa.reach + reach_b);
+        let limited = resolution >= clear || resolution.is_nan();
+        if self.mesh.reach < least_resolved_reach::<T>() {
+            return StepResult::PrecisionLimit {
+                resolution: resolution.max_nan(least_resolved_reach()),
+            };
+        }
+        let kind = params.bound.cheap_kind();
+        let first_only = params.witness == WitnessSearch::First;
+        let (start, budget) = (self.stats, params.work_budget);
+        let mut found = Found::default();
+        self.ws.clear();
+        self.ws.placed.push(pa.place(self.mesh, 0));
+        let root = if limited {
+            NodeStep::Apart {
+                step: T::ZERO,
+                far: false,
+            }
+        } else {
+            NodeStep::Near(-T::INFINITY)
+        };
+        self.ws.enqueue(Pending::new(root, (0, 0), (0, 0)));
+        while let Some(Queued { slot, .. }) = self.ws.heap.pop() {
+            let Pending {
+                near, key, i, at, ..
+            } = self.ws.pending[slot as usize];
+            let key = T::from_f64(key.0);
+            if let Some(touch) = found.touching {
+                if first_only || !near || key >= touch.distance {
+                    break;
+                }
+            } else if !near && key >= best {
+                self.stats.pruned += self.ws.heap.len() as u64 + 1;
+                best = best.min_nan(key);
+                break;
+            }
+            let used = Work::new(
+                self.stats.node_pairs - start.node_pairs,
+                self.stats.triangle_pairs - start.triangle_pairs,
+            );
+            if used.node_pairs >= budget.node_pairs || used.triangle_pairs >= budget.triangle_pairs
+            {
+                if found.touching.is_some() {
+                    break;
+                }
+                return StepResult::WorkLimit;
+            }
+            self.stats.node_pairs += 1;
+            let node = &self.mesh.nodes[i as usize];
+            if let Some(li) = node.leaf() {
+                self.leaf(
+                    &pa,
+                    &side,
+                    li,
+                    (kind, params.one_sided, cd, clear),
+                    (&mut best, &mut found),
+                );
+                continue;
+            }
+            let _ = at;
+            for child in [node.left, node.right] {
+                let slot = self.ws.placed.len() as u32;
+                self.ws.placed.push(pa.place(self.mesh, child));
+                let q = self.ws.placed[slot as usize];
+                let near_within = if limited { -T::INFINITY } else { cd };
+                let best_step = if found.touching.is_some() {
+                    T::ZERO
+                } else {
+                    best
+                };
+                let step = match self.node_step(
+                    &pa,
+                    &side,
+                    (child, q),
+                    (kind, params.one_sided, near_within, clear),
+                    best_step,
+                ) {
+                    NodeStep::Near(_) if limited => NodeStep::Apart {
+                        step: T::ZERO,
+                        far: false,
+                    },
+                    other => other,
+                };
+                match (step, found.touching) {
+                    (NodeStep::Near(g), Some(touch)) if g < touch.distance => {
+                        self.ws.enqueue(Pending::new(step, (child, 0), (slot, 0)));
+                    }
+                    (_, Some(_)) => self.stats.pruned += 1,
+                    (NodeStep::Apart { step, .. }, None) if step >= best => self.stats.pruned += 1,
+                    (s, None) => self.ws.enqueue(Pending::new(s, (child, 0), (slot, 0))),
+                }
+            }
+        }
+        if let Some(witness) = found.touching {
+            return StepResult::Touching {
+                witness,
+                normal: found.touching_normal,
+            };
+        }
+        if limited && best <= T::ZERO {
+            return StepResult::PrecisionLimit { resolution };
+        }
+        StepResult::Advance {
+            step: best,
+            witness: found.closest,
+            normal: found.normal,
+        }
+    }
+
+    fn work(&self) -> Work {
+        Work::new(self.stats.node_pairs, self.stats.triangle_pairs)
+    }
+}
+
+impl<T: Float> MeshShapePair<'_, T> {
+    /// A mesh node against B (Lemma 12.4): the gap between the node's box
+    /// and B along the line from the box's centre to B's origin and along
+    /// the line to B's point nearest it on that line (or along a plane's
+    /// normal), the larger kept; over the node's ball bound and B's.
+    fn node_step(
+        &mut self,
+        pa: &Placed<'_, T>,
+        side: &Side<'_, '_, T>,
+        (i, q): (u32, PlacedNode<T>),
+        (kind, one_sided, near_within, clearance): (BoundKind, bool, T, T),
+        best_step: T,
+    ) -> NodeStep<T> {
+        let node = &self.mesh.nodes[i as usize];
+        let gap = |n: Vec3<T>| {
+            let upper = q.centre.dot(n)
+                + node
+                    .obb
+                    .support_up_with(pa.pose.inverse_transform_vector(n), &pa.box_err);
+            side.lower(n) - upper
+        };
+        let mut chosen: Option<(T, Direction<T>)> = None;
+        let mut consider = |n: Direction<T>| {
+            let g = gap(n.get());
+            if g > T::ZERO && chosen.is_none_or(|(best, _)| g > best) {
+                chosen = Some((g, n));
+            }
+        };
+        match side.fixed {
+            Some(n) => consider(n),
+            None => {
+                let d = side.pose.translation - q.centre;
+                if let Ok(n) = Direction::try_new_fast(d) {
+                    consider(n);
+                    // B's point farthest towards the node, and the line to it.
+                    let local = side
+                        .shape
+                        .core_support_point(side.pose.inverse_transform_vector(-n.get()));
+                    let near = side.pose.transform_point(local.to_vec3());
+                    if let Ok(m) = Direction::try_new_fast(near - q.centre) {
+                        consider(m);
+                    }
+                }
+            }
+        }
+        let Some((gap, n)) = chosen else {
+            self.stats.overlapping += 1;
+            return NodeStep::Near(-T::INFINITY);
+        };
+        let g = gap_down(gap, pa.err, side.err, pa.reach + side.weight);
+        if g.is_nan() || g <= near_within {
+            return NodeStep::Near(g);
+        }
+        if best_step <= T::ZERO {
+            // Only gaps matter in the search for the closest pair.
+            return NodeStep::Apart {
+                step: T::ZERO,
+                far: false,
+            };
+        }
+        self.stats.bounds += 2;
+        let mu_a = if one_sided {
+            pa.motion.probe(n).ball_rate(&node.ball, kind)
+        } else {
+            pa.motion.probe(n).ball_speed(&node.ball, kind)
+        };
+        let mu_b = side.rate(n, kind, one_sided);
+        NodeStep::Apart {
+            step: step_down(g, clearance, mu_a, mu_b),
+            far: false,
+        }
+    }
+
+    /// One triangle of the mesh against B: its distance (GJK against B's
+    /// core, or its lowest corner above a plane), a contact within the
+    /// contact distance, else its own step along its closest direction.
+    fn leaf(
+        &mut self,
+        pa: &Placed<'_, T>,
+        side: &Side<'_, '_, T>,
+        li: usize,
+        (kind, one_sided, cd, clearance): (BoundKind, bool, T, T),
+        (best, found): (&mut T, &mut Found<T>),
+    ) {
+        let leaf = &self.mesh.leaves[li];
+        self.stats.triangle_pairs += 1;
+        let corners = pa.corners(leaf);
+        let (on_a, on_b, distance, dir) = match side.fixed {
+            Some(n) => {
+                // The lowest corner above the plane (n = -m).
+                let m = -n.get();
+                let (mut low, mut h) = (corners[0], T::INFINITY);
+                for c in corners {
+                    let height = (c - side.pose.translation).dot(m);
+                    if height < h {
+                        (low, h) = (c, height);
+                    }
+                }
+                (low, low - m * h, h, Ok(n))
+            }
+            None => {
+                let tri = corners.map(Vec3::to_array);
+                let closest = ConvexPolytope::try_new(&tri, Pose::IDENTITY).map(|p| {
+                    gjk_distance(
+                        &p,
+                        &PlacedCore {
+                            shape: side.shape,
+                            pose: &side.pose,
+                        },
+                        &GjkParams::default(),
+                    )
+                });
+                let Ok(c) = closest else {
+                    return;
+                };
+                let (on_a, core) = (c.on_a.to_vec3(), c.on_b.to_vec3());
+                let dir = Direction::try_new(core - on_a);
+                let r = side.shape.radius();
+                let on_b = dir.map_or(core, |n| core - n.get() * r);
+                (on_a, on_b, (core - on_a).length() - r, dir)
+            }
+        };
+        let w = Witness::new(
+            distance.max_nan(T::ZERO),
+            Point3::from_vec3(on_a),
+            Point3::from_vec3(on_b),
+        );
+        if found.closest.is_none_or(|b| w.distance < b.distance) {
+            found.closest = Some(w);
+        }
+        let (Ok(n), true) = (dir, distance > cd) else {
+            if found.touching.is_none_or(|b| w.distance < b.distance) {
+                found.touching = Some(w);
+                found.touching_normal = dir.ok();
+            }
+            return;
+        };
+        if found.touching.is_some() {
+            return;
+        }
+        let nv = n.get();
+        let upper = corners[0]
+            .dot(nv)
+            .max_nan(corners[1].dot(nv))
+            .max_nan(corners[2].dot(nv));
+        let g = gap_down(
+            side.lower(nv) - upper,
+            pa.leaf_err(leaf),
+            side.err,
+            pa.reach + side.weight,
+        );
+        self.stats.bounds += 2;
+        let mu_a = if one_sided {
+            pa.leaf_rate(leaf, n, kind)
+        } else {
+            pa.leaf_speed(leaf, n, kind)
+        };
+        let step = step_down(g, clearance, mu_a, side.rate(n, kind, one_sided));
+        if step < *best {
+            *best = step;
+            found.normal = Some(n);
+        }
+    }
+}
