@@ -14,7 +14,8 @@
 //! fails. `SHAPES_QUERIES` sets the queries per pair of kinds (default 3).
 
 use motion_bound::ca::{
-    time_of_impact, CaError, CaOutcome, CaParams, HalfSpacePair, MeshShapePair, ShapePair,
+    time_of_impact, AnyPair, CaError, CaOutcome, CaParams, HalfSpacePair, MeshShapePair, Shape,
+    ShapePair,
 };
 use motion_bound::scenes::{torus, TorusKnot};
 use motion_bound::testkit::ground_truth::place;
@@ -452,4 +453,98 @@ fn meshes_against_every_shape_kind_and_the_ground_are_never_late_and_never_misse
     }
     println!("{n} mesh queries: {contacts} contacts, {sampled} sampled; 0 missed, 0 late");
     assert!(sampled * 2 >= n, "too few sampled contacts for power");
+}
+
+/// `AnyPair` takes every pair of kinds in either order, and the order
+/// changes nothing but which body is A: the same outcome, the time within
+/// rounding, the normal reversed. Two half-spaces are a typed error.
+#[test]
+fn any_pair_answers_every_pair_of_kinds_in_either_order() {
+    let mut rng = Rng::new(29);
+    let vertices: &'static [[f64; 3]] = Box::leak(
+        (0..8)
+            .map(|_| rng.direction().map(|x| x * rng.range(0.2, 0.45)))
+            .collect::<Vec<_>>()
+            .into_boxed_slice(),
+    );
+    let ring = torus::<f64>(0.5, 0.12, 24, 8).expect("ring");
+    let tree = BallTree::try_from_mesh(&ring).expect("tree");
+    let ground = HalfSpace::try_new(Vec3::new(0.0, 1.0, 0.0)).expect("normal");
+    let mut shapes: Vec<(&str, Shape<'_, f64>)> = kinds(vertices)
+        .into_iter()
+        .map(|k| (k.name, Shape::Convex(k.shape)))
+        .collect();
+    shapes.push(("ring", Shape::Mesh(&tree)));
+    shapes.push(("ground", Shape::HalfSpace(ground)));
+    let mut checked = 0;
+    for (na, a) in &shapes {
+        for (nb, b) in &shapes {
+            let grounds = usize::from(matches!(a, Shape::HalfSpace(_)))
+                + usize::from(matches!(b, Shape::HalfSpace(_)));
+            if grounds == 2 {
+                assert_eq!(AnyPair::try_new(*a, *b).err(), Some(CaError::Unsupported));
+                continue;
+            }
+            for _ in 0..3 {
+                // B's start is above A's (a ground stays at the origin and
+                // still: it may only translate).
+                let spin = |rng: &mut Rng, s: &Shape<'_, f64>| match s {
+                    Shape::HalfSpace(_) => [0.0; 3],
+                    _ => rng.direction().map(|x| x * 3.0 * rng.unit()),
+                };
+                let at = |rng: &mut Rng, s: &Shape<'_, f64>, y: f64| match s {
+                    Shape::HalfSpace(_) => [0.0; 3],
+                    _ => [rng.range(-0.3, 0.3), y, rng.range(-0.3, 0.3)],
+                };
+                let ma =
+                    RigidMotion::try_from_arrays(at(&mut rng, a, 0.0), [0.0; 3], spin(&mut rng, a))
+                        .expect("motion");
+                let mb = RigidMotion::try_from_arrays(
+                    at(&mut rng, b, 2.0),
+                    if matches!(b, Shape::HalfSpace(_)) {
+                        [0.0, 0.5, 0.0]
+                    } else {
+                        [0.0, -3.0, 0.0]
+                    },
+                    spin(&mut rng, b),
+                )
+                .expect("motion");
+                let params = CaParams::default().with_contact_distance(1e-3);
+                let ab = time_of_impact(
+                    &mut AnyPair::try_new(*a, *b).expect("pair"),
+                    &ma,
+                    &mb,
+                    &params,
+                )
+                .expect("query");
+                let ba = time_of_impact(
+                    &mut AnyPair::try_new(*b, *a).expect("pair"),
+                    &mb,
+                    &ma,
+                    &params,
+                )
+                .expect("query");
+                let what = format!("{na} / {nb}: {ab:?} against {ba:?}");
+                assert_eq!(
+                    core::mem::discriminant(&ab.outcome),
+                    core::mem::discriminant(&ba.outcome),
+                    "{what}"
+                );
+                let (ta, tb) = (
+                    ab.outcome.earliest_possible_contact(),
+                    ba.outcome.earliest_possible_contact(),
+                );
+                if let (Some(x), Some(y)) = (ta, tb) {
+                    assert!((x - y).abs() <= 1e-3 / 3.0, "{what}");
+                }
+                if let (Some(x), Some(y)) = (ab.outcome.contact(), ba.outcome.contact()) {
+                    if let (Some(p), Some(q)) = (x.normal, y.normal) {
+                        assert!(p.get().dot(q.get()) < -0.9, "normals not reversed: {what}");
+                    }
+                }
+                checked += 1;
+            }
+        }
+    }
+    println!("{checked} ordered pairs of kinds checked in both orders");
 }

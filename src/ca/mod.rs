@@ -19,6 +19,7 @@
 //! * [`CaParams`] holds the tolerances, the iteration limit and the bound
 //!   choice ([`BoundChoice`]).
 
+mod any;
 mod balls;
 mod convex;
 mod driver;
@@ -29,6 +30,7 @@ mod outcome;
 mod params;
 mod shapes;
 
+pub use any::{AnyPair, Shape};
 pub use balls::BallPair;
 pub use convex::{ConvexPair, GjkProximity, Proximity};
 pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};

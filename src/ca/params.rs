@@ -356,6 +356,8 @@ pub enum CaError {
     /// unboundedly far from its rotation centre). Give its normal in the
     /// world frame.
     TurnedHalfSpace,
+    /// No stepper takes this pair of shape kinds (two half-spaces).
+    Unsupported,
 }
 
 impl fmt::Display for CaError {
@@ -364,6 +366,7 @@ impl fmt::Display for CaError {
             Self::InvalidParameter(p) => write!(f, "parameter out of range: {p}"),
             Self::IntervalMismatch => f.write_str("the two motions have different intervals"),
             Self::Input(e) => write!(f, "invalid input: {e}"),
+            Self::Unsupported => f.write_str("no stepper takes this pair of shape kinds"),
             Self::TurnedHalfSpace => {
                 f.write_str("a half-space may only translate (no start orientation, no spin)")
             }

@@ -1,0 +1,151 @@
+//! Any two shapes: the one place where a pair of kinds picks its stepper.
+
+use crate::bvh::BallTree;
+use crate::ca::{
+    CaError, CaParams, CaStep, HalfSpacePair, MeshPair, MeshShapePair, ShapePair, StepResult,
+    Witness, Work,
+};
+use crate::{Convex, Float, HalfSpace, PreparedMotion, RigidMotion};
+
+/// A body's shape, whatever its kind.
+#[derive(Clone, Copy, Debug)]
+#[non_exhaustive]
+pub enum Shape<'a, T> {
+    /// A convex shape: a core and a radius ([`Convex`]).
+    Convex(Convex<'a, T>),
+    /// A triangle mesh through its hierarchy.
+    Mesh(&'a BallTree<T>),
+    /// A half-space (translating only).
+    HalfSpace(HalfSpace<T>),
+}
+
+/// The stepper of a pair of [`Shape`]s of any kinds, a [`CaStep`]: each
+/// family of pairs has one stepper (mesh-mesh [`MeshPair`], mesh against
+/// a convex shape or a half-space [`MeshShapePair`], convex-convex
+/// [`ShapePair`], convex against a half-space [`HalfSpacePair`]), taken
+/// in either order; this is where the choice is made.
+///
+/// ```
+/// use motion_bound::ca::{time_of_impact, AnyPair, CaParams, Shape};
+/// use motion_bound::{Convex, HalfSpace, RigidMotion, Vec3};
+/// // The ground first, a ball second: the pair is taken the other way
+/// // round and its answer turned back.
+/// let ground = Shape::HalfSpace(HalfSpace::try_new(Vec3::new(0.0, 1.0, 0.0))?);
+/// let ball = Shape::Convex(Convex::try_ball(0.5)?);
+/// let still = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3])?;
+/// let falling = RigidMotion::try_from_arrays([0.0, 2.5, 0.0], [0.0, -4.0, 0.0], [0.0; 3])?;
+/// let mut pair = AnyPair::try_new(ground, ball)?;
+/// let report = time_of_impact(&mut pair, &still, &falling, &CaParams::default())?;
+/// let contact = report.outcome.contact().expect("it lands");
+/// assert!(contact.time <= 0.5 && contact.time > 0.5 - 1e-4);
+/// // The normal points from the first body (the ground) to the second.
+/// assert!(contact.normal.expect("a normal").get().y > 0.99);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Debug)]
+pub struct AnyPair<'a, T> {
+    pair: Kinds<'a, T>,
+    /// The stepper takes B before A.
+    swapped: bool,
+}
+
+#[derive(Debug)]
+enum Kinds<'a, T> {
+    Meshes(MeshPair<'a, T>),
+    MeshShape(MeshShapePair<'a, T>),
+    Shapes(ShapePair<'a, T>),
+    HalfSpace(HalfSpacePair<'a, T>),
+}
+
+impl<'a, T: Float> AnyPair<'a, T> {
+    /// The stepper for bodies of shapes `a` and `b`.
+    ///
+    /// # Errors
+    /// [`CaError::Unsupported`] for two half-spaces.
+    pub fn try_new(a: Shape<'a, T>, b: Shape<'a, T>) -> Result<Self, CaError> {
+        use Shape::{Convex as C, HalfSpace as H, Mesh as M};
+        let (pair, swapped) = match (a, b) {
+            (M(ta), M(tb)) => (Kinds::Meshes(MeshPair::new(ta, tb)), false),
+            (M(t), C(s)) => (Kinds::MeshShape(MeshShapePair::new(t, s)), false),
+            (C(s), M(t)) => (Kinds::MeshShape(MeshShapePair::new(t, s)), true),
+            (M(t), H(h)) => (
+                Kinds::MeshShape(MeshShapePair::with_half_space(t, h)),
+                false,
+            ),
+            (H(h), M(t)) => (Kinds::MeshShape(MeshShapePair::with_half_space(t, h)), true),
+            (C(sa), C(sb)) => (Kinds::Shapes(ShapePair::new(sa, sb)), false),
+            (C(s), H(h)) => (Kinds::HalfSpace(HalfSpacePair::new(s, h)), false),
+            (H(h), C(s)) => (Kinds::HalfSpace(HalfSpacePair::new(s, h)), true),
+            (H(_), H(_)) => return Err(CaError::Unsupported),
+        };
+        Ok(Self { pair, swapped })
+    }
+
+    fn inner(&mut self) -> &mut dyn CaStep<T> {
+        match &mut self.pair {
+            Kinds::Meshes(p) => p,
+            Kinds::MeshShape(p) => p,
+            Kinds::Shapes(p) => p,
+            Kinds::HalfSpace(p) => p,
+        }
+    }
+
+    fn inner_ref(&self) -> &dyn CaStep<T> {
+        match &self.pair {
+            Kinds::Meshes(p) => p,
+            Kinds::MeshShape(p) => p,
+            Kinds::Shapes(p) => p,
+            Kinds::HalfSpace(p) => p,
+        }
+    }
+}
+
+/// A result for `(B, A)` turned into one for `(A, B)`: the witnesses
+/// exchanged, the normal reversed.
+fn turned<T: Float>(r: StepResult<T>) -> StepResult<T> {
+    let flip = |w: Witness<T>| Witness::new(w.distance, w.on_b, w.on_a);
+    match r {
+        StepResult::Touching { witness, normal } => StepResult::Touching {
+            witness: flip(witness),
+            normal: normal.map(|n| -n),
+        },
+        StepResult::Advance {
+            step,
+            witness,
+            normal,
+        } => StepResult::Advance {
+            step,
+            witness: witness.map(flip),
+            normal: normal.map(|n| -n),
+        },
+        other => other,
+    }
+}
+
+impl<T: Float> CaStep<T> for AnyPair<'_, T> {
+    fn step(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> StepResult<T> {
+        if self.swapped {
+            turned(self.inner().step(t, b, a, params))
+        } else {
+            self.inner().step(t, a, b, params)
+        }
+    }
+
+    fn work(&self) -> Work {
+        self.inner_ref().work()
+    }
+
+    fn check_motions(&self, a: &RigidMotion<T>, b: &RigidMotion<T>) -> Result<(), CaError> {
+        if self.swapped {
+            self.inner_ref().check_motions(b, a)
+        } else {
+            self.inner_ref().check_motions(a, b)
+        }
+    }
+}
