@@ -2,8 +2,8 @@
 
 use crate::bvh::BallTree;
 use crate::ca::{
-    CaError, CaParams, CaStep, HalfSpacePair, MeshPair, MeshShapePair, ShapePair, StepResult,
-    Witness, Work,
+    CaError, CaParams, CaStep, HalfSpacePair, MeshPair, MeshParams, MeshShapePair, MeshWorkspace,
+    ShapePair, StepResult, Witness, Work,
 };
 use crate::{Convex, Float, HalfSpace, PreparedMotion, RigidMotion};
 
@@ -47,6 +47,8 @@ pub struct AnyPair<'a, T> {
     pair: Kinds<'a, T>,
     /// The stepper takes B before A.
     swapped: bool,
+    /// A workspace given to a pair that does not descend a mesh.
+    spare: Option<MeshWorkspace<T>>,
 }
 
 #[derive(Debug)]
@@ -78,7 +80,51 @@ impl<'a, T: Float> AnyPair<'a, T> {
             (H(h), C(s)) => (Kinds::HalfSpace(HalfSpacePair::new(s, h)), true),
             (H(_), H(_)) => return Err(CaError::Unsupported),
         };
-        Ok(Self { pair, swapped })
+        Ok(Self {
+            pair,
+            swapped,
+            spare: None,
+        })
+    }
+
+    /// With the scratch space `workspace` for a pair that descends a mesh
+    /// (taken back by [`into_workspace`](Self::into_workspace)); other pairs
+    /// keep it untouched.
+    #[must_use]
+    pub fn with_workspace(mut self, workspace: MeshWorkspace<T>) -> Self {
+        self.pair = match self.pair {
+            Kinds::Meshes(p) => Kinds::Meshes(p.with_workspace_from(workspace)),
+            Kinds::MeshShape(p) => Kinds::MeshShape(p.with_workspace(workspace)),
+            other => {
+                self.spare = Some(workspace);
+                other
+            }
+        };
+        self
+    }
+
+    /// The scratch space (the one given, or a new empty one).
+    #[must_use]
+    pub fn into_workspace(self) -> MeshWorkspace<T> {
+        match self.pair {
+            Kinds::Meshes(p) => p.into_workspace(),
+            Kinds::MeshShape(p) => p.into_workspace(),
+            _ => self.spare.unwrap_or_default(),
+        }
+    }
+
+    /// With the mesh traversal's knobs (for a mesh-mesh pair; others have
+    /// none).
+    ///
+    /// # Errors
+    /// As [`MeshPair::try_with_params`].
+    pub fn try_with_mesh_params(mut self, params: MeshParams<T>) -> Result<Self, CaError> {
+        if let Kinds::Meshes(p) = self.pair {
+            self.pair = Kinds::Meshes(p.try_with_params(params)?);
+        } else {
+            params.validate()?;
+        }
+        Ok(self)
     }
 
     fn inner(&mut self) -> &mut dyn CaStep<T> {

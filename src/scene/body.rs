@@ -1,7 +1,10 @@
 //! The bodies of a scene: a shape, its motion over the frame, its groups.
 
 use crate::shape::ball::enclosing_ball;
-use crate::{BallTree, BoundingBall, Float, InputError, RigidMotion, VertexSet};
+use crate::{
+    BallTree, BoundingBall, Convex, ConvexKind, Float, HalfSpace, InputError, RigidMotion,
+    VertexSet,
+};
 
 /// The shape of a scene body, in its own frame (the frame its tree or
 /// vertices are given in). A shape is borrowed: every body of the same shape
@@ -15,6 +18,12 @@ pub enum BodyShape<'a, T> {
     Convex(VertexSet<'a, T>),
     /// A ball (in the body frame).
     Ball(BoundingBall<T>),
+    /// A convex shape: a ball, capsule, cuboid, cylinder, cone or polytope,
+    /// rounded or not ([`Convex`]).
+    Shape(Convex<'a, T>),
+    /// A half-space (the ground, a wall): it may translate but not turn,
+    /// and it is never paired with another half-space.
+    HalfSpace(HalfSpace<T>),
 }
 
 /// The kind of a [`BodyShape`], for errors and counters.
@@ -27,15 +36,21 @@ pub enum ShapeKind {
     Convex,
     /// [`BodyShape::Ball`].
     Ball,
+    /// [`BodyShape::Shape`], of this kind.
+    Shape(ConvexKind),
+    /// [`BodyShape::HalfSpace`].
+    HalfSpace,
 }
 
 impl core::fmt::Display for ShapeKind {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
-        f.write_str(match self {
-            Self::Mesh => "mesh",
-            Self::Convex => "convex vertex set",
-            Self::Ball => "ball",
-        })
+        match self {
+            Self::Mesh => f.write_str("mesh"),
+            Self::Convex => f.write_str("convex vertex set"),
+            Self::Ball => f.write_str("ball"),
+            Self::Shape(kind) => write!(f, "{kind}"),
+            Self::HalfSpace => f.write_str("half-space"),
+        }
     }
 }
 
@@ -47,6 +62,8 @@ impl<T: Float> BodyShape<'_, T> {
             Self::Mesh(_) => ShapeKind::Mesh,
             Self::Convex(_) => ShapeKind::Convex,
             Self::Ball(_) => ShapeKind::Ball,
+            Self::Shape(s) => ShapeKind::Shape(s.kind()),
+            Self::HalfSpace(_) => ShapeKind::HalfSpace,
         }
     }
 
@@ -64,6 +81,9 @@ impl<T: Float> BodyShape<'_, T> {
             Self::Mesh(tree) => Ok(*tree.root_ball()),
             Self::Ball(ball) => Ok(*ball),
             Self::Convex(set) => enclosing_ball(set.vertices()),
+            Self::Shape(s) => BoundingBall::try_new([T::ZERO; 3], s.reach()),
+            // Unbounded: the broad phase tests half-spaces by their plane.
+            Self::HalfSpace(_) => BoundingBall::try_new([T::ZERO; 3], T::ZERO),
         }
     }
 }

@@ -14,7 +14,9 @@ use alloc::vec::Vec;
 
 use crate::ca::placement_error;
 use crate::rounding::{add_up, diff_up, reach_along_up, sub_down};
-use crate::{BoundKind, BoundingBall, Direction, Float, Point3, PreparedMotion, RigidMotion, Vec3};
+use crate::{
+    BoundKind, BoundingBall, Direction, Float, HalfSpace, Point3, PreparedMotion, RigidMotion, Vec3,
+};
 
 /// An axis-aligned box that holds every point of a body at every time of its
 /// motion's interval (`proofs/11-scene.md`, Lemma 11.1).
@@ -138,6 +140,64 @@ impl<T: Float> SweptBox<T> {
     }
 }
 
+/// Half-spaces in the broad phase (`proofs/11-scene.md`, Lemma 11.4).
+impl<T: Float> SweptBox<T> {
+    /// No point at all (a half-space's place in the sweep: apart from
+    /// everything).
+    pub(super) fn empty() -> Self {
+        Self {
+            lo: [T::INFINITY; 3],
+            hi: [-T::INFINITY; 3],
+        }
+    }
+
+    /// Whether the box stays more than `distance` above the plane of the
+    /// half-space moving by `motion` (translation only) over the motion's
+    /// interval (`proofs/11-scene.md`, Lemma 11.4): its least height along
+    /// the normal, rounded down, against the plane's greatest offset over
+    /// the frame, rounded up. A turning half-space is never above anything
+    /// (its query reports the error).
+    pub(super) fn is_above(
+        &self,
+        half: &HalfSpace<T>,
+        motion: &RigidMotion<T>,
+        distance: T,
+    ) -> bool {
+        if motion.angular() != Vec3::ZERO || !motion.orientation().is_identity() {
+            return false;
+        }
+        let m = half.normal().get().to_array();
+        // The box's least `x . m` (each term at the corner that minimises it).
+        let mut low = T::ZERO;
+        for ((&mk, &lo), &hi) in m.iter().zip(&self.lo).zip(&self.hi) {
+            let x = if mk >= T::ZERO { lo } else { hi };
+            low = add_down(low, mul_down(x, mk));
+        }
+        // The plane's offset `p . m` at the start, and its rise over the frame.
+        let iv = motion.interval();
+        let (err, _) = placement_error(motion, iv.start(), T::ZERO);
+        let p = motion.pose_at(iv.start()).translation.to_array();
+        let mut high = T::ZERO;
+        for (&pk, &mk) in p.iter().zip(&m) {
+            high = add_up(high, mul_up(pk, mk));
+        }
+        // `|m| <= 1 + gamma_5 < 2`: the placement error moves the offset by
+        // at most `2 err`.
+        high = add_up(high, add_up(err, err));
+        let v = motion.linear().to_array();
+        let mut rise = T::ZERO;
+        for (&vk, &mk) in v.iter().zip(&m) {
+            rise = add_up(rise, mul_up(vk, mk));
+        }
+        if rise > T::ZERO {
+            high = add_up(high, reach_along_up(rise, diff_up(iv.end(), iv.start())));
+        }
+        // A height along `m` is at most `|m| <= 1 + 6 u` times the distance.
+        let needed = mul_up(distance, T::ONE + T::from_u32(6) * T::UNIT_ROUNDOFF);
+        sub_down(low, high) > needed
+    }
+}
+
 /// Every pair `(i, j)`, `i < j`, of boxes that are not apart by more than
 /// `distance`, except pairs where both `skip[i]` and `skip[j]`, in increasing
 /// order: a sweep and prune along the axis on which the boxes' centres
@@ -217,4 +277,20 @@ fn spread_axis<T: Float>(boxes: &[SweptBox<T>]) -> usize {
         }
     }
     best.0
+}
+
+/// `a b` rounded down (`next_down` of the rounded product: at most the
+/// exact one, whatever the signs; section "Swept box").
+fn mul_down<T: Float>(a: T, b: T) -> T {
+    (a * b).next_down()
+}
+
+/// `a b` rounded up.
+fn mul_up<T: Float>(a: T, b: T) -> T {
+    (a * b).next_up()
+}
+
+/// `a + b` rounded down.
+fn add_down<T: Float>(a: T, b: T) -> T {
+    (a + b).next_down()
 }

@@ -3,13 +3,15 @@
 use alloc::vec::Vec;
 use core::fmt;
 
-use super::body::{BodyShape, Groups, SceneBody, ShapeKind};
+use super::body::{BodyShape, Groups, SceneBody};
 use super::broad::{overlapping_pairs, BoxPath, SweptBox};
 use crate::ca::{
-    time_of_impact, BallPair, CaError, CaParams, CaReport, ConvexPair, MeshPair, MeshParams,
-    MeshWorkspace,
+    time_of_impact, AnyPair, BallPair, CaError, CaParams, CaReport, ConvexPair, MeshPair,
+    MeshParams, MeshWorkspace, Shape,
 };
-use crate::{Float, InputError, Isometry, RigidMotion, TimeInterval, Vec3};
+use crate::{
+    BoundingBall, Convex, Float, InputError, Isometry, RigidMotion, TimeInterval, Vec3, VertexSet,
+};
 
 /// What went wrong building or querying a scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -23,17 +25,6 @@ pub enum SceneQueryError {
     IntervalMismatch {
         /// The body.
         body: usize,
-    },
-    /// A body's shape is of another kind than the scene's first body: a scene
-    /// holds meshes, or convex vertex sets, or balls (a convex body among
-    /// meshes goes in as the mesh of its hull).
-    MixedShapes {
-        /// The body.
-        body: usize,
-        /// Its kind.
-        kind: ShapeKind,
-        /// The scene's kind.
-        scene: ShapeKind,
     },
     /// No body of that number.
     UnknownBody(usize),
@@ -49,9 +40,6 @@ impl fmt::Display for SceneQueryError {
                     f,
                     "body {body} moves over another interval than the scene's frame"
                 )
-            }
-            Self::MixedShapes { body, kind, scene } => {
-                write!(f, "body {body} is a {kind} in a scene of {scene}es")
             }
             Self::UnknownBody(b) => write!(f, "no body {b}"),
         }
@@ -154,6 +142,9 @@ pub struct SceneStats {
     pub translating_bodies: usize,
     /// Bodies that turn: six one-sided ball rates for their boxes.
     pub turning_bodies: usize,
+    /// Half-space bodies (tested by their plane, not in the sweep; counted
+    /// among the static bodies when they do not move).
+    pub half_spaces: usize,
     /// Axis rates evaluated for the swept boxes (six per turning body).
     pub box_rates: usize,
     /// Axis rates skipped (six per static or translating body).
@@ -162,6 +153,8 @@ pub struct SceneStats {
     pub pairs_all: u64,
     /// Pairs of two static bodies: never a query.
     pub pairs_static: u64,
+    /// Pairs of two half-spaces, not both static: never a query.
+    pub pairs_of_half_spaces: u64,
     /// Pairs whose swept boxes are apart: provably no contact in the frame.
     pub pairs_culled: u64,
     /// Pairs the caller's filter or the bodies' groups excluded (counted
@@ -369,8 +362,8 @@ impl<'a, T: Float> Scene<'a, T> {
     /// number.
     ///
     /// # Errors
-    /// [`SceneQueryError::IntervalMismatch`], [`SceneQueryError::MixedShapes`], or
-    /// [`SceneQueryError::Input`] for a vertex set too large for its bounding ball.
+    /// [`SceneQueryError::IntervalMismatch`], or [`SceneQueryError::Input`]
+    /// for a vertex set too large for its bounding ball.
     pub fn try_add(
         &mut self,
         shape: BodyShape<'a, T>,
@@ -446,18 +439,9 @@ impl<'a, T: Float> Scene<'a, T> {
         shape: &BodyShape<'a, T>,
         motion: &RigidMotion<T>,
     ) -> Result<(), SceneQueryError> {
+        let _ = shape;
         if motion.interval() != self.interval {
             return Err(SceneQueryError::IntervalMismatch { body });
-        }
-        if let Some(first) = self.bodies.first() {
-            let scene = first.shape.kind();
-            if shape.kind() != scene {
-                return Err(SceneQueryError::MixedShapes {
-                    body,
-                    kind: shape.kind(),
-                    scene,
-                });
-            }
         }
         Ok(())
     }
@@ -515,6 +499,16 @@ impl<'a, T: Float> Scene<'a, T> {
             if body.motion.interval() != self.interval {
                 return Err(SceneQueryError::IntervalMismatch { body: i });
             }
+            if let BodyShape::HalfSpace(_) = body.shape {
+                // Unbounded: out of the sweep, tested by its plane below.
+                stats.half_spaces += 1;
+                let still =
+                    body.motion.linear() == Vec3::ZERO && body.motion.angular() == Vec3::ZERO;
+                stats.static_bodies += usize::from(still);
+                ws.boxes.push(SweptBox::empty());
+                ws.skip.push(still);
+                continue;
+            }
             let (b, path) = SweptBox::with_path(&body.ball, &body.motion);
             match path {
                 BoxPath::Static => {
@@ -544,7 +538,38 @@ impl<'a, T: Float> Scene<'a, T> {
             &mut ws.order,
             &mut ws.overlapping,
         );
-        stats.pairs_culled = stats.pairs_all - stats.pairs_static - ws.overlapping.len() as u64;
+        // Half-spaces against every other body whose swept box is not
+        // certified above their swept plane (`proofs/11-scene.md`, Lemma
+        // 11.4); never two half-spaces.
+        if stats.half_spaces > 0 {
+            for (h, body) in self.bodies.iter().enumerate() {
+                let BodyShape::HalfSpace(half) = body.shape else {
+                    continue;
+                };
+                for (j, other) in self.bodies.iter().enumerate() {
+                    if matches!(other.shape, BodyShape::HalfSpace(_)) {
+                        if h < j && !(ws.skip[h] && ws.skip[j]) {
+                            stats.pairs_of_half_spaces += 1;
+                        }
+                        continue;
+                    }
+                    if ws.skip[h] && ws.skip[j] {
+                        // Both static: counted among the static pairs.
+                        continue;
+                    }
+                    let clear =
+                        ws.boxes[j].is_above(&half, &body.motion, params.ca.contact_distance);
+                    if !clear {
+                        ws.overlapping.push((index(h.min(j)), index(h.max(j))));
+                    }
+                }
+            }
+            ws.overlapping.sort_unstable();
+        }
+        stats.pairs_culled = stats.pairs_all
+            - stats.pairs_static
+            - stats.pairs_of_half_spaces
+            - ws.overlapping.len() as u64;
         ws.candidates.clear();
         for &(a, b) in &ws.overlapping {
             let (ia, ib) = (a as usize, b as usize);
@@ -618,11 +643,16 @@ impl<'a, T: Float> Scene<'a, T> {
                 0,
             ),
             (sa, sb) => {
-                return Err(SceneQueryError::MixedShapes {
-                    body: b,
-                    kind: sb.kind(),
-                    scene: sa.kind(),
-                })
+                // Every other pair of kinds: one stepper per family.
+                let mut pair =
+                    AnyPair::try_new(any_shape(&sa, &ba.ball)?, any_shape(&sb, &bb.ball)?)?
+                        .try_with_mesh_params(params.mesh)?
+                        .with_workspace(core::mem::take(mesh_ws));
+                let r = time_of_impact(&mut pair, ma, mb, &params.ca);
+                *mesh_ws = pair.into_workspace();
+                let r = r?;
+                let visited = r.work.node_pairs;
+                (r, visited)
             }
         };
         work.iterations = u64::from(report.iterations);
@@ -721,4 +751,28 @@ impl<T: Float + Send + Sync> Scene<'_, T> {
         }
         Ok(finish(ws, self.bodies.len(), work))
     }
+}
+
+/// A scene body's shape as the steppers' [`Shape`]: a vertex set as the
+/// polytope of its hull, a ball as the point of its centre with its radius.
+fn any_shape<'s, T: Float>(
+    shape: &BodyShape<'s, T>,
+    ball: &'s BoundingBall<T>,
+) -> Result<Shape<'s, T>, InputError> {
+    Ok(match *shape {
+        BodyShape::Mesh(tree) => Shape::Mesh(tree),
+        BodyShape::Convex(set) => Shape::Convex(Convex::polytope(set)),
+        BodyShape::Ball(b) => {
+            let centre = VertexSet::from_validated(core::slice::from_ref(ball.centre()));
+            Shape::Convex(Convex::polytope(centre).try_rounded(b.radius())?)
+        }
+        BodyShape::Shape(s) => Shape::Convex(s),
+        BodyShape::HalfSpace(h) => Shape::HalfSpace(h),
+    })
+}
+
+/// A body number as the sweep's `u32` (scenes of more than `u32::MAX`
+/// bodies are not supported).
+fn index(i: usize) -> u32 {
+    u32::try_from(i).unwrap_or(u32::MAX)
 }

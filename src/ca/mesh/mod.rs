@@ -104,6 +104,15 @@ impl<'a, T: Float> MeshPair<'a, T> {
         self.ws
     }
 
+    /// The same pair with the scratch space `workspace`.
+    #[must_use]
+    pub(crate) fn with_workspace_from(self, workspace: MeshWorkspace<T>) -> Self {
+        Self {
+            ws: workspace,
+            ..self
+        }
+    }
+
     /// With the traversal's tuning knobs `params` (the defaults suit most
     /// scenes).
     ///
