@@ -7,7 +7,7 @@ use crate::{Direction, Float, Vec3};
 /// plane through the body origin with outward normal `m` (parry's
 /// `HalfSpace`). Its body's motion places it; it may translate but not
 /// rotate (a rotating plane sweeps unboundedly far from its rotation centre:
-/// [`CaError::RotatingHalfSpace`](crate::ca::CaError::RotatingHalfSpace)).
+/// [`CaError::TurnedHalfSpace`](crate::ca::CaError::TurnedHalfSpace)).
 ///
 /// The stored normal is the given one normalised in floating point; the
 /// half-space is exactly `{x : x . m^ <= 0}` for that stored `m^` (any
