@@ -19,6 +19,7 @@
 //! * [`CaParams`] holds the tolerances, the iteration limit and the bound
 //!   choice ([`BoundChoice`]).
 
+#[cfg(feature = "alloc")]
 mod any;
 mod balls;
 mod convex;
@@ -30,6 +31,7 @@ mod outcome;
 mod params;
 mod shapes;
 
+#[cfg(feature = "alloc")]
 pub use any::{AnyPair, Shape};
 pub use balls::BallPair;
 pub use convex::{ConvexPair, GjkProximity, Proximity};
