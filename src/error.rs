@@ -67,6 +67,10 @@ pub enum InputError {
     PieceLength,
     /// A cylinder or cone of zero height (a disc).
     ZeroHeight,
+    /// A shape placed a second time (place it once, at its whole pose).
+    AlreadyPlaced,
+    /// A compound with no part.
+    EmptyCompound,
     /// A triangle names a vertex that does not exist.
     TriangleIndexOutOfRange {
         /// The triangle's position in the list.
@@ -112,6 +116,8 @@ impl fmt::Display for InputError {
             Self::NoTriangles => f.write_str("no triangle"),
             Self::PieceLength => f.write_str("a piece length that is not positive"),
             Self::ZeroHeight => f.write_str("a cylinder or cone of zero height"),
+            Self::AlreadyPlaced => f.write_str("a shape placed twice"),
+            Self::EmptyCompound => f.write_str("a compound with no part"),
             Self::TriangleIndexOutOfRange { triangle, index } => {
                 write!(
                     f,

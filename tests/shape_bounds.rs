@@ -17,6 +17,9 @@ use motion_bound::{
     BoundKind, Convex, Direction, Float, PreparedMotion, RigidMotion, Rotation, Vec3, VertexSet,
 };
 
+/// The pull of samples towards the body origin, `1 - 2^-20`.
+const PULL: f64 = 1.0 - 1.0 / 1_048_576.0;
+
 /// Every kind of shape in `T`, with sampled points of its boundary (body
 /// frame, in `f64`, from the shape's parameters as rounded to `T`).
 /// A named shape with sampled points of its boundary.
@@ -158,11 +161,46 @@ fn check<T: Float, R: Real>(cases: usize, seed: u64) -> usize {
             })
             .collect();
         let set = VertexSet::try_new(&poly).expect("set");
+        // Every kind also placed at a random pose (a compound's part): its
+        // samples mapped by the pose (in f64; the 2^-20 pull covers the
+        // stored matrix's 80 u).
+        let q = [
+            rng.unit(),
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+        ];
+        let rot = Rotation::try_from_quaternion(
+            T::from_f64(q[0]),
+            T::from_f64(q[1]),
+            T::from_f64(q[2]),
+            T::from_f64(q[3]),
+        )
+        .expect("rotation");
+        let shift = rng
+            .direction()
+            .map(|x| T::from_f64(x * rng.range(0.0, 0.8)));
+        let pose = motion_bound::Isometry::try_new(rot, Vec3::from_array(shift)).expect("pose");
+        let matrix = rot.matrix().map(|row| row.map(|x| x.to_f64()));
+        let mut all = Vec::new();
         for (name, shape, samples) in shapes::<T>(&mut rng) {
-            let pts: Vec<[T; 3]> = samples
+            // Pulled towards the part's own origin (inside: every core is
+            // star-shaped about it) before the pose, then not again.
+            let placed: Vec<[f64; 3]> = samples
                 .iter()
-                .map(|p| p.map(|x| T::from_f64(x * (1.0 - 1.0 / 1048576.0))))
+                .map(|p| {
+                    let p = p.map(|x| x * PULL);
+                    [0, 1, 2].map(|i| {
+                        (0..3).map(|j| matrix[i][j] * p[j]).sum::<f64>() + shift[i].to_f64()
+                    })
+                })
                 .collect();
+            let samples: Vec<[f64; 3]> = samples.iter().map(|p| p.map(|x| x * PULL)).collect();
+            all.push((name, shape, samples));
+            all.push(("placed", shape.try_placed(pose).expect("placed"), placed));
+        }
+        for (name, shape, samples) in all {
+            let pts: Vec<[T; 3]> = samples.iter().map(|p| p.map(T::from_f64)).collect();
             verify::<T, R>(name, &shape, &probe, &m, n, &pts);
             checked += 1;
         }

@@ -548,3 +548,186 @@ fn any_pair_answers_every_pair_of_kinds_in_either_order() {
     }
     println!("{checked} ordered pairs of kinds checked in both orders");
 }
+
+/// A body of several parts for the ground truth: each part's inscribed
+/// triangles (placed in the body frame) and radius.
+struct Multi {
+    name: &'static str,
+    shape: Shape<'static, f64>,
+    parts: Vec<(Vec<[[f64; 3]; 3]>, f64)>,
+}
+
+/// The first sampled time at which some part of `a` comes within the sum
+/// of radii of some part of `b` (inscribed, so a sampled contact is real).
+fn first_sampled_multi(
+    a: &Multi,
+    ma: &RigidMotion<f64>,
+    b: &Multi,
+    mb: &RigidMotion<f64>,
+) -> Option<f64> {
+    for s in 0..=SAMPLES {
+        let t = s as f64 / SAMPLES as f64;
+        let placed = |tris: &[[[f64; 3]; 3]], m: &RigidMotion<f64>| -> Vec<[Point3<f64>; 3]> {
+            tris.iter()
+                .map(|tri| tri.map(|p| Point3::from_array(place(m, p, t))))
+                .collect()
+        };
+        for (ta, ra) in &a.parts {
+            let pa = placed(ta, ma);
+            for (tb, rb) in &b.parts {
+                let pb = placed(tb, mb);
+                for x in &pa {
+                    for y in &pb {
+                        if try_triangle_triangle(x, y).expect("finite").distance <= ra + rb {
+                            return Some(t);
+                        }
+                    }
+                }
+            }
+        }
+    }
+    None
+}
+
+/// Triangles mapped by a pose (the stored matrix and the translation).
+fn placed_triangles(
+    tris: &[[[f64; 3]; 3]],
+    pose: &motion_bound::Isometry<f64>,
+) -> Vec<[[f64; 3]; 3]> {
+    let m = pose.rotation().matrix();
+    let t = pose.translation().to_array();
+    tris.iter()
+        .map(|tri| {
+            tri.map(|p| [0, 1, 2].map(|i| (0..3).map(|j| m[i][j] * p[j]).sum::<f64>() + t[i]))
+        })
+        .collect()
+}
+
+#[test]
+fn compounds_against_every_kind_are_never_late_and_never_missed() {
+    use motion_bound::ca::{Compound, Part};
+    use motion_bound::{Isometry, Rotation};
+    let queries: usize = std::env::var("SHAPES_QUERIES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(3);
+    let mut rng = Rng::new(30);
+    let vertices: &'static [[f64; 3]] = Box::leak(
+        (0..8)
+            .map(|_| rng.direction().map(|x| x * rng.range(0.2, 0.45)))
+            .collect::<Vec<_>>()
+            .into_boxed_slice(),
+    );
+    let ks = kinds(vertices);
+    let (ball, capsule, cuboid) = (&ks[0], &ks[1], &ks[2]);
+    let at = |x: [f64; 3]| Isometry::try_from_translation(Vec3::from_array(x)).expect("pose");
+    let turned = |axis: [f64; 3], angle: f64, x: [f64; 3]| {
+        Isometry::try_new(
+            Rotation::try_from_axis_angle(Vec3::from_array(axis), angle).expect("rotation"),
+            Vec3::from_array(x),
+        )
+        .expect("pose")
+    };
+    // A dumbbell: two balls on a bar along x.
+    let bar = turned([0.0, 0.0, 1.0], core::f64::consts::FRAC_PI_2, [0.0; 3]);
+    let dumbbell_parts = [
+        (ball, at([-0.5, 0.0, 0.0])),
+        (ball, at([0.5, 0.0, 0.0])),
+        (capsule, bar),
+    ];
+    // A table: a top and four legs (the cuboid kind, turned and moved).
+    let table_parts = [
+        (cuboid, turned([0.0, 1.0, 0.0], 0.3, [0.0, 0.35, 0.0])),
+        (cuboid, at([0.45, -0.2, 0.3])),
+        (cuboid, at([-0.45, -0.2, 0.3])),
+        (cuboid, at([0.45, -0.2, -0.3])),
+        (cuboid, at([-0.45, -0.2, -0.3])),
+    ];
+    let ring = torus::<f64>(0.5, 0.12, 24, 8).expect("ring");
+    let ring_tree: &'static BallTree<f64> =
+        Box::leak(Box::new(BallTree::try_from_mesh(&ring).expect("tree")));
+    let multi = |name: &'static str,
+                 parts: &[(&Kind, Isometry<f64>)],
+                 mesh: Option<&TriMesh<f64>>|
+     -> Multi {
+        let mut shape_parts: Vec<Part<'static, f64>> = parts
+            .iter()
+            .map(|(k, pose)| Part::Convex(k.shape.try_placed(*pose).expect("placed")))
+            .collect();
+        let mut gt: Vec<(Vec<[[f64; 3]; 3]>, f64)> = parts
+            .iter()
+            .map(|(k, pose)| (placed_triangles(&k.triangles, pose), k.radius))
+            .collect();
+        if let Some(m) = mesh {
+            shape_parts.push(Part::Mesh(ring_tree));
+            gt.push((m.triangle_corners().collect(), 0.0));
+        }
+        let compound: &'static Compound<'static, f64> =
+            Box::leak(Box::new(Compound::try_new(shape_parts).expect("compound")));
+        Multi {
+            name,
+            shape: Shape::Compound(compound),
+            parts: gt,
+        }
+    };
+    let compounds = [
+        multi("dumbbell", &dumbbell_parts, None),
+        multi("table", &table_parts, None),
+        multi(
+            "ring with a box",
+            &[(cuboid, turned([1.0, 0.0, 0.0], 0.5, [0.0, 0.4, 0.0]))],
+            Some(&ring),
+        ),
+    ];
+    let mut others: Vec<Multi> = ks
+        .iter()
+        .map(|k| Multi {
+            name: k.name,
+            shape: Shape::Convex(k.shape),
+            parts: vec![(k.triangles.clone(), k.radius)],
+        })
+        .collect();
+    others.push(Multi {
+        name: "ring",
+        shape: Shape::Mesh(ring_tree),
+        parts: vec![(ring.triangle_corners().collect(), 0.0)],
+    });
+    let (mut n, mut contacts, mut sampled) = (0, 0, 0);
+    for c in &compounds {
+        for o in others.iter().chain(compounds.iter()) {
+            for q in 0..queries {
+                let start = rng.direction().map(|x| x * rng.range(1.4, 1.9));
+                let aim = rng.direction().map(|x| x * 0.6 * rng.unit());
+                let v = [0, 1, 2].map(|k| aim[k] - start[k]);
+                let spin = [0.0, 3.0, 12.0][q % 3];
+                let wa = rng.direction().map(|x| x * spin * 0.25 * rng.unit());
+                let wb = rng.direction().map(|x| x * spin * rng.unit());
+                let ma = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], wa).expect("motion");
+                let mb = RigidMotion::try_from_arrays(start, v, wb).expect("motion");
+                let params = CaParams::default().with_contact_distance(1e-3);
+                let report = time_of_impact(
+                    &mut AnyPair::try_new(c.shape, o.shape).expect("pair"),
+                    &ma,
+                    &mb,
+                    &params,
+                )
+                .expect("a valid query");
+                let truth = first_sampled_multi(c, &ma, o, &mb);
+                let what = format!(
+                    "{} vs {} query {q}: {report:?}, sampled {truth:?}",
+                    c.name, o.name
+                );
+                match (report.outcome.earliest_possible_contact(), truth) {
+                    (None, Some(_)) => panic!("MISSED: {what}"),
+                    (Some(t), Some(g)) => assert!(t <= g, "LATE: {what}"),
+                    _ => {}
+                }
+                n += 1;
+                contacts += usize::from(report.outcome.contact().is_some());
+                sampled += usize::from(truth.is_some());
+            }
+        }
+    }
+    println!("{n} compound queries: {contacts} contacts, {sampled} sampled; 0 missed, 0 late");
+    assert!(sampled * 2 >= n, "too few sampled contacts for power");
+}

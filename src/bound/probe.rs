@@ -289,9 +289,9 @@ impl<T: Float> DirectedProbe<T> {
             kind,
         );
         match g.second {
-            Some(p) => {
+            Some((p, d)) => {
                 let r = radius_up(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-                main.max_nan(bound(self, &[p], r, shape.radius(), kind))
+                main.max_nan(bound(self, &[p], r, dilation_up(d, shape.radius()), kind))
             }
             None => main,
         }

@@ -1,11 +1,12 @@
 //! Any two shapes: the one place where a pair of kinds picks its stepper.
 
 use crate::bvh::BallTree;
+use crate::ca::compound::{Compound, Part};
 use crate::ca::{
     CaError, CaParams, CaStep, HalfSpacePair, MeshPair, MeshParams, MeshShapePair, MeshWorkspace,
     ShapePair, StepResult, Witness, Work,
 };
-use crate::{Convex, Float, HalfSpace, PreparedMotion, RigidMotion};
+use crate::{Convex, Direction, Float, HalfSpace, PreparedMotion, RigidMotion};
 
 /// A body's shape, whatever its kind.
 #[derive(Clone, Copy, Debug)]
@@ -17,6 +18,29 @@ pub enum Shape<'a, T> {
     Mesh(&'a BallTree<T>),
     /// A half-space (translating only).
     HalfSpace(HalfSpace<T>),
+    /// Several parts moving as one body.
+    Compound(&'a Compound<'a, T>),
+}
+
+impl<'a, T: Float> Shape<'a, T> {
+    /// The `k`-th of this shape's parts (a compound's, or the shape itself
+    /// as its only part), and how many there are.
+    fn part(&self, k: usize) -> Shape<'a, T> {
+        match *self {
+            Shape::Compound(c) => match c.parts()[k] {
+                Part::Convex(s) => Shape::Convex(s),
+                Part::Mesh(t) => Shape::Mesh(t),
+            },
+            other => other,
+        }
+    }
+
+    fn part_count(&self) -> usize {
+        match self {
+            Shape::Compound(c) => c.parts().len(),
+            _ => 1,
+        }
+    }
 }
 
 /// The stepper of a pair of [`Shape`]s of any kinds, a [`CaStep`]: each
@@ -57,6 +81,7 @@ enum Kinds<'a, T> {
     MeshShape(MeshShapePair<'a, T>),
     Shapes(ShapePair<'a, T>),
     HalfSpace(HalfSpacePair<'a, T>),
+    Compound(CompoundPair<'a, T>),
 }
 
 impl<'a, T: Float> AnyPair<'a, T> {
@@ -67,6 +92,15 @@ impl<'a, T: Float> AnyPair<'a, T> {
     pub fn try_new(a: Shape<'a, T>, b: Shape<'a, T>) -> Result<Self, CaError> {
         use Shape::{Convex as C, HalfSpace as H, Mesh as M};
         let (pair, swapped) = match (a, b) {
+            (Shape::Compound(_), _) | (_, Shape::Compound(_)) => (
+                Kinds::Compound(CompoundPair {
+                    a,
+                    b,
+                    ws: MeshWorkspace::new(),
+                    work: Work::ZERO,
+                }),
+                false,
+            ),
             (M(ta), M(tb)) => (Kinds::Meshes(MeshPair::new(ta, tb)), false),
             (M(t), C(s)) => (Kinds::MeshShape(MeshShapePair::new(t, s)), false),
             (C(s), M(t)) => (Kinds::MeshShape(MeshShapePair::new(t, s)), true),
@@ -95,6 +129,7 @@ impl<'a, T: Float> AnyPair<'a, T> {
         self.pair = match self.pair {
             Kinds::Meshes(p) => Kinds::Meshes(p.with_workspace_from(workspace)),
             Kinds::MeshShape(p) => Kinds::MeshShape(p.with_workspace(workspace)),
+            Kinds::Compound(p) => Kinds::Compound(CompoundPair { ws: workspace, ..p }),
             other => {
                 self.spare = Some(workspace);
                 other
@@ -109,6 +144,7 @@ impl<'a, T: Float> AnyPair<'a, T> {
         match self.pair {
             Kinds::Meshes(p) => p.into_workspace(),
             Kinds::MeshShape(p) => p.into_workspace(),
+            Kinds::Compound(p) => p.ws,
             _ => self.spare.unwrap_or_default(),
         }
     }
@@ -133,6 +169,7 @@ impl<'a, T: Float> AnyPair<'a, T> {
             Kinds::MeshShape(p) => p,
             Kinds::Shapes(p) => p,
             Kinds::HalfSpace(p) => p,
+            Kinds::Compound(p) => p,
         }
     }
 
@@ -142,6 +179,7 @@ impl<'a, T: Float> AnyPair<'a, T> {
             Kinds::MeshShape(p) => p,
             Kinds::Shapes(p) => p,
             Kinds::HalfSpace(p) => p,
+            Kinds::Compound(p) => p,
         }
     }
 }
@@ -193,5 +231,101 @@ impl<T: Float> CaStep<T> for AnyPair<'_, T> {
         } else {
             self.inner_ref().check_motions(a, b)
         }
+    }
+}
+
+/// A step with its witness and normal.
+type Advance<T> = (T, Option<Witness<T>>, Option<Direction<T>>);
+
+/// A pair with a compound on either side: the pairs of its parts, each by
+/// its family's stepper, made afresh at every step (allocation-free: they
+/// share one mesh workspace), the least step over them (Lemma 9.2: the
+/// part pairs cover every point pair), the closest contact among them.
+#[derive(Debug)]
+struct CompoundPair<'a, T> {
+    a: Shape<'a, T>,
+    b: Shape<'a, T>,
+    ws: MeshWorkspace<T>,
+    work: Work,
+}
+
+impl<T: Float> CaStep<T> for CompoundPair<'_, T> {
+    fn step(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> StepResult<T> {
+        let mut used = Work::ZERO;
+        let mut advance: Option<Advance<T>> = None;
+        let mut touching: Option<(Witness<T>, Option<Direction<T>>)> = None;
+        let mut limit: Option<T> = None;
+        for i in 0..self.a.part_count() {
+            for j in 0..self.b.part_count() {
+                let Ok(pair) = AnyPair::try_new(self.a.part(i), self.b.part(j)) else {
+                    continue;
+                };
+                let mut pair = pair.with_workspace(core::mem::take(&mut self.ws));
+                let budget = params.work_budget.saturating_sub(used);
+                let r = pair.step(t, a, b, &params.with_work_budget(budget));
+                let w = pair.work();
+                used = Work::new(
+                    used.node_pairs + w.node_pairs,
+                    used.triangle_pairs + w.triangle_pairs,
+                );
+                self.work = Work::new(
+                    self.work.node_pairs + w.node_pairs,
+                    self.work.triangle_pairs + w.triangle_pairs,
+                );
+                self.ws = pair.into_workspace();
+                match r {
+                    StepResult::Touching { witness, normal } => {
+                        if touching.is_none_or(|(w0, _)| witness.distance < w0.distance) {
+                            touching = Some((witness, normal));
+                        }
+                    }
+                    StepResult::WorkLimit if touching.is_none() => return StepResult::WorkLimit,
+                    StepResult::WorkLimit => {}
+                    StepResult::PrecisionLimit { resolution } => {
+                        limit = Some(limit.map_or(resolution, |r| r.max_nan(resolution)));
+                    }
+                    StepResult::Advance {
+                        step,
+                        witness,
+                        normal,
+                    } => {
+                        if advance.is_none_or(|(s, _, _)| step < s) {
+                            advance = Some((step, witness, normal));
+                        }
+                    }
+                }
+            }
+        }
+        if let Some((witness, normal)) = touching {
+            return StepResult::Touching { witness, normal };
+        }
+        if let Some(resolution) = limit {
+            return StepResult::PrecisionLimit { resolution };
+        }
+        let (step, witness, normal) = advance.unwrap_or((T::ZERO, None, None));
+        StepResult::Advance {
+            step,
+            witness,
+            normal,
+        }
+    }
+
+    fn work(&self) -> Work {
+        self.work
+    }
+
+    fn check_motions(&self, a: &RigidMotion<T>, b: &RigidMotion<T>) -> Result<(), CaError> {
+        for i in 0..self.a.part_count() {
+            for j in 0..self.b.part_count() {
+                AnyPair::try_new(self.a.part(i), self.b.part(j))?.check_motions(a, b)?;
+            }
+        }
+        Ok(())
     }
 }

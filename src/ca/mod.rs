@@ -22,6 +22,8 @@
 #[cfg(feature = "alloc")]
 mod any;
 mod balls;
+#[cfg(feature = "alloc")]
+mod compound;
 mod convex;
 mod driver;
 mod half_space;
@@ -34,6 +36,8 @@ mod shapes;
 #[cfg(feature = "alloc")]
 pub use any::{AnyPair, Shape};
 pub use balls::BallPair;
+#[cfg(feature = "alloc")]
+pub use compound::{Compound, Part};
 pub use convex::{ConvexPair, GjkProximity, Proximity};
 pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};
 pub use half_space::HalfSpacePair;

@@ -1,5 +1,6 @@
 //! The bodies of a scene: a shape, its motion over the frame, its groups.
 
+use crate::ca::Compound;
 use crate::shape::ball::enclosing_ball;
 use crate::{
     BallTree, BoundingBall, Convex, ConvexKind, Float, HalfSpace, InputError, RigidMotion,
@@ -24,6 +25,8 @@ pub enum BodyShape<'a, T> {
     /// A half-space (the ground, a wall): it may translate but not turn,
     /// and it is never paired with another half-space.
     HalfSpace(HalfSpace<T>),
+    /// Several parts moving as one body ([`Compound`]).
+    Compound(&'a Compound<'a, T>),
 }
 
 /// The kind of a [`BodyShape`], for errors and counters.
@@ -40,6 +43,8 @@ pub enum ShapeKind {
     Shape(ConvexKind),
     /// [`BodyShape::HalfSpace`].
     HalfSpace,
+    /// [`BodyShape::Compound`].
+    Compound,
 }
 
 impl core::fmt::Display for ShapeKind {
@@ -50,6 +55,7 @@ impl core::fmt::Display for ShapeKind {
             Self::Ball => f.write_str("ball"),
             Self::Shape(kind) => write!(f, "{kind}"),
             Self::HalfSpace => f.write_str("half-space"),
+            Self::Compound => f.write_str("compound"),
         }
     }
 }
@@ -64,6 +70,7 @@ impl<T: Float> BodyShape<'_, T> {
             Self::Ball(_) => ShapeKind::Ball,
             Self::Shape(s) => ShapeKind::Shape(s.kind()),
             Self::HalfSpace(_) => ShapeKind::HalfSpace,
+            Self::Compound(_) => ShapeKind::Compound,
         }
     }
 
@@ -84,6 +91,7 @@ impl<T: Float> BodyShape<'_, T> {
             Self::Shape(s) => BoundingBall::try_new([T::ZERO; 3], s.reach()),
             // Unbounded: the broad phase tests half-spaces by their plane.
             Self::HalfSpace(_) => BoundingBall::try_new([T::ZERO; 3], T::ZERO),
+            Self::Compound(c) => c.bounding_ball(),
         }
     }
 }

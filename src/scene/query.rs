@@ -768,6 +768,7 @@ fn any_shape<'s, T: Float>(
         }
         BodyShape::Shape(s) => Shape::Convex(s),
         BodyShape::HalfSpace(h) => Shape::HalfSpace(h),
+        BodyShape::Compound(c) => Shape::Compound(c),
     })
 }
 

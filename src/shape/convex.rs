@@ -18,8 +18,9 @@
 //! at its origin, as parry's do.
 
 use crate::error::{check_components, InputError, Quantity};
+use crate::rounding::gamma;
 use crate::rounding::{radius_up, sum_up};
-use crate::{Float, Point3, Vec3, VertexSet};
+use crate::{Float, Isometry, Point3, Vec3, VertexSet};
 
 /// Which shape a [`Convex`] is (its core's kind; `rounded` when it has a
 /// radius beyond what the kind itself has: a ball and a capsule are points
@@ -118,6 +119,9 @@ pub struct Convex<'a, T> {
     core_reach: T,
     /// An upper bound of `|r|_1` over the core's points.
     weight: T,
+    /// The core's placement in the body frame (a compound's part), if any:
+    /// the core is `{M k + t}` for the stored matrix `M` of the rotation.
+    placed: Option<Isometry<T>>,
 }
 
 /// A finite, non-negative length, or the error naming it.
@@ -176,6 +180,7 @@ impl<'a, T: Float> Convex<'a, T> {
             rounded,
             core_reach,
             weight,
+            placed: None,
         }
     }
 
@@ -302,6 +307,45 @@ impl<'a, T: Float> Convex<'a, T> {
         })
     }
 
+    /// The same shape placed at `pose` in the body frame (a compound's
+    /// part at its local pose): its core mapped by the pose's stored matrix
+    /// `M` and translation, its radius grown by `||M - R|| |k|` over the
+    /// core (`Rotation::matrix_error`, `80 u` at most; `0` for the
+    /// identity), so that it holds the exactly rotated shape
+    /// (`proofs/12-shapes.md`, "Placed shapes").
+    ///
+    /// # Errors
+    /// [`InputError::AlreadyPlaced`] for a shape placed before (place a
+    /// shape once, at its whole pose), or [`InputError::TooLarge`] with
+    /// [`Quantity::Radius`] when the grown radius overflows the range.
+    ///
+    /// ```
+    /// use motion_bound::{Convex, Isometry, Rotation, Vec3};
+    /// let turned = Rotation::try_from_axis_angle(Vec3::new(0.0, 0.0, 1.0), 0.5)?;
+    /// let arm = Convex::try_capsule(0.5, 0.1)?.try_placed(Isometry::try_new(turned, Vec3::new(1.0, 0.0, 0.0))?)?;
+    /// assert!(arm.reach() >= 1.0 + 0.5 + 0.1 && arm.radius() >= 0.1 && arm.radius() < 0.1 + 1e-12);
+    /// # Ok::<(), motion_bound::InputError>(())
+    /// ```
+    pub fn try_placed(self, pose: Isometry<T>) -> Result<Self, InputError> {
+        if self.placed.is_some() {
+            return Err(InputError::AlreadyPlaced);
+        }
+        let rot = pose.rotation();
+        let grown = if rot.is_identity() {
+            self
+        } else {
+            let slack = rot.matrix_error() * self.core_reach * (T::ONE + gamma::<T>(2));
+            let rounded = self.rounded;
+            let mut shape = self.try_rounded(slack)?;
+            shape.rounded = rounded;
+            shape
+        };
+        Ok(Self {
+            placed: Some(pose),
+            ..grown
+        })
+    }
+
     /// Which shape this is.
     #[must_use]
     pub const fn kind(&self) -> ConvexKind {
@@ -329,14 +373,29 @@ impl<'a, T: Float> Convex<'a, T> {
     #[inline]
     #[must_use]
     pub fn reach(&self) -> T {
-        sum_up(self.core_reach, self.radius)
+        sum_up(self.placed_core_reach(), self.radius)
+    }
+
+    /// An upper bound of `|r|` over the placed core's points.
+    fn placed_core_reach(&self) -> T {
+        match self.placed {
+            Some(pose) => {
+                let t = pose.translation();
+                sum_up(radius_up(t.length_squared()), self.core_reach)
+            }
+            None => self.core_reach,
+        }
     }
 
     /// An upper bound of `|r|_1` over the core's points: the weight of the
     /// support's rounding (`proofs/12-shapes.md`, "Support").
     #[inline]
-    pub(crate) const fn weight(&self) -> T {
-        self.weight
+    pub(crate) fn weight(&self) -> T {
+        match self.placed {
+            // `|M k + t|_1 <= |t|_1 + sqrt 3 (1 + 80 u) |k| <= |t|_1 + 2 |k|`.
+            Some(pose) => sum_up(pose.translation().norm_l1(), self.core_reach * T::TWO),
+            None => self.weight,
+        }
     }
 
     pub(crate) const fn core(&self) -> &Core<'a, T> {
@@ -345,7 +404,7 @@ impl<'a, T: Float> Convex<'a, T> {
 
     /// The core's support along the body-frame direction `d`: a point of
     /// the core maximising `r . d` (any one on ties).
-    pub(crate) fn core_support_point(&self, d: Vec3<T>) -> Point3<T> {
+    fn local_support_point(&self, d: Vec3<T>) -> Point3<T> {
         let sign = |x: T| if x < T::ZERO { -T::ONE } else { T::ONE };
         match self.core {
             Core::Point => Point3::new(T::ZERO, T::ZERO, T::ZERO),
@@ -394,6 +453,29 @@ impl<'a, T: Float> Convex<'a, T> {
     /// `proofs/12-shapes.md`, "Support"). The shape's own support adds
     /// `radius |d|`.
     pub(crate) fn core_support_value(&self, d: Vec3<T>) -> T {
+        match self.placed {
+            Some(pose) => {
+                let r = pose.rotation();
+                self.local_support_value(r.inverse_rotate(d)) + pose.translation().dot(d)
+            }
+            None => self.local_support_value(d),
+        }
+    }
+
+    /// A core point maximising `r . d`, placed.
+    pub(crate) fn core_support_point(&self, d: Vec3<T>) -> Point3<T> {
+        match self.placed {
+            Some(pose) => {
+                let r = pose.rotation();
+                let local = self.local_support_point(r.inverse_rotate(d));
+                Point3::from_vec3(r.rotate(local.to_vec3()) + pose.translation())
+            }
+            None => self.local_support_point(d),
+        }
+    }
+
+    /// The unplaced core's support value along `d`.
+    fn local_support_value(&self, d: Vec3<T>) -> T {
         match self.core {
             Core::Point => T::ZERO,
             Core::Segment { half_height: h } => h * d.y.abs(),
@@ -419,6 +501,41 @@ impl<'a, T: Float> Convex<'a, T> {
     /// body points (exact floats) and a radius that, added to each point,
     /// covers the core; the shape's own radius is added by the caller.
     pub(crate) fn bound_groups(&self) -> BoundGroups<'a, T> {
+        let local = self.local_bound_groups();
+        let Some(pose) = self.placed else {
+            return local;
+        };
+        // Placed points are off the exact `M p + t` by at most
+        // `16 u (|p| + |t|_1)` (`proofs/12-shapes.md`, "Placed shapes").
+        let t = pose.translation();
+        let e = T::from_u32(16)
+            * T::UNIT_ROUNDOFF
+            * sum_up(self.core_reach, t.norm_l1())
+            * (T::ONE + gamma::<T>(2));
+        let place = |p: [T; 3]| (pose.rotation().rotate(Vec3::from_array(p)) + t).to_array();
+        let z = T::ZERO;
+        let mut g = BoundGroups {
+            small: [[z; 3]; 8],
+            len: 0,
+            dilation: z,
+            second: None,
+            set: None,
+        };
+        if local.set.is_some() {
+            // A placed hull: the ball about its placed origin of its reach.
+            g.push(t.to_array());
+            g.dilation = sum_up(self.core_reach, e);
+            return g;
+        }
+        for &p in local.points() {
+            g.push(place(p));
+        }
+        g.dilation = sum_up(local.dilation, e);
+        g.second = local.second.map(|(p, d)| (place(p), sum_up(d, e)));
+        g
+    }
+
+    fn local_bound_groups(&self) -> BoundGroups<'a, T> {
         let z = T::ZERO;
         let mut g = BoundGroups {
             small: [[z; 3]; 8],
@@ -455,7 +572,7 @@ impl<'a, T: Float> Convex<'a, T> {
             } => {
                 g.push([z, -h, z]);
                 g.dilation = rho;
-                g.second = Some([z, h, z]);
+                g.second = Some(([z, h, z], z));
             }
             Core::Polytope(set) => g.set = Some(set),
         }
@@ -483,8 +600,9 @@ pub(crate) struct BoundGroups<'a, T> {
     len: usize,
     /// The radius of the balls about `points` (a cylinder's or cone's rim).
     pub(crate) dilation: T,
-    /// A point covered by itself (a cone's apex).
-    pub(crate) second: Option<[T; 3]>,
+    /// A point with its own dilation (a cone's apex: zero, or a
+    /// placement's rounding).
+    pub(crate) second: Option<([T; 3], T)>,
     set: Option<VertexSet<'a, T>>,
 }
 
