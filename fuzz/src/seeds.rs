@@ -915,3 +915,27 @@ pub fn far_seeds() -> Vec<(String, Vec<u8>)> {
         })
         .collect()
 }
+
+/// Seeds of the `shapes` target (raw bytes as its `Bytes` reader takes them):
+/// every pair of body kinds (mesh, compound, ground for the second, convex),
+/// the rest of the bytes a fixed pattern of moderate values.
+#[must_use]
+pub fn shapes_seeds() -> Vec<(String, Vec<u8>)> {
+    let names = ["mesh", "compound", "ground", "convex"];
+    let mut out = Vec::new();
+    for (i, a) in names.iter().enumerate() {
+        if *a == "ground" {
+            continue;
+        }
+        for (j, b) in names.iter().enumerate() {
+            let mut bytes = vec![i as u8];
+            // The first body's own bytes, then the second's kind and bytes,
+            // then the motions: a pattern that reads as moderate values.
+            bytes.extend((0..40u8).map(|k| k.wrapping_mul(37).wrapping_add(11)));
+            bytes.push(j as u8);
+            bytes.extend((0..80u8).map(|k| k.wrapping_mul(53).wrapping_add(7)));
+            out.push((format!("{a}-{b}"), bytes));
+        }
+    }
+    out
+}
