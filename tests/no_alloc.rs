@@ -124,3 +124,90 @@ fn a_steady_scene_frame_loop_allocates_nothing() {
         info.count_total, info.bytes_total
     );
 }
+
+/// The same for a scene of every kind (a ground, convex shapes, a mesh, a
+/// compound): every pair family's stepper shares the scene's workspace.
+#[test]
+fn a_steady_mixed_scene_frame_loop_allocates_nothing() {
+    use motion_bound::ca::{Compound, Part};
+    use motion_bound::scene::{BodyShape, Scene, SceneParams, SceneWorkspace};
+    use motion_bound::{Convex, HalfSpace, TimeInterval};
+    let ring = torus::<f64>(0.5, 0.1, 24, 8).expect("ring");
+    let tree = BallTree::try_from_mesh(&ring).expect("tree");
+    let at = |x: f64| Isometry::try_from_translation(Vec3::new(x, 0.0, 0.0)).expect("pose");
+    let dumbbell = Compound::try_new(vec![
+        Part::Convex(
+            Convex::try_ball(0.3)
+                .and_then(|b| b.try_placed(at(-0.6)))
+                .expect("ball"),
+        ),
+        Part::Convex(
+            Convex::try_ball(0.3)
+                .and_then(|b| b.try_placed(at(0.6)))
+                .expect("ball"),
+        ),
+        Part::Mesh(&tree),
+    ])
+    .expect("compound");
+    let shapes = [
+        BodyShape::Shape(Convex::try_ball(0.4).expect("ball")),
+        BodyShape::Shape(Convex::try_capsule(0.4, 0.2).expect("capsule")),
+        BodyShape::Shape(Convex::try_cuboid([0.3, 0.4, 0.2]).expect("cuboid")),
+        BodyShape::Shape(Convex::try_cylinder(0.4, 0.3).expect("cylinder")),
+        BodyShape::Mesh(&tree),
+        BodyShape::Compound(&dumbbell),
+    ];
+    let mut rng = Rng::new(12);
+    let frames: Vec<Vec<RigidMotion<f64>>> = (0..6)
+        .map(|_| {
+            (0..24)
+                .map(|_| {
+                    let x0 = [
+                        rng.range(-2.5, 2.5),
+                        rng.range(0.0, 2.0),
+                        rng.range(-2.5, 2.5),
+                    ];
+                    let v = rng.direction().map(|x| x * rng.range(0.0, 1.5));
+                    let w = rng.direction().map(|x| x * rng.range(0.0, 5.0));
+                    RigidMotion::try_from_arrays(x0, v, w).expect("motion")
+                })
+                .collect()
+        })
+        .collect();
+    let mut scene = Scene::try_new(TimeInterval::try_new(0.0, 1.0).expect("frame")).expect("scene");
+    let ground = HalfSpace::try_new(Vec3::new(0.0, 1.0, 0.0)).expect("ground");
+    let still = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3]).expect("still");
+    scene
+        .try_add(BodyShape::HalfSpace(ground), still)
+        .expect("ground");
+    for (i, m) in frames[0].iter().enumerate() {
+        scene.try_add(shapes[i % shapes.len()], *m).expect("body");
+    }
+    let params = SceneParams::default();
+    let mut ws = SceneWorkspace::new();
+    let run = |scene: &mut Scene<'_, f64>, ws: &mut SceneWorkspace<f64>| {
+        let (mut tested, mut contacts) = (0, 0);
+        for frame in &frames {
+            for (i, m) in frame.iter().enumerate() {
+                scene.try_set_motion(i + 1, *m).expect("same frame");
+            }
+            let report = scene.query(ws, &params).expect("valid");
+            tested += report.pairs().len();
+            contacts += report.contacts().count();
+        }
+        (tested, contacts)
+    };
+    let warm = run(&mut scene, &mut ws);
+    let mut steady = (0, 0);
+    let info = allocation_counter::measure(|| steady = run(&mut scene, &mut ws));
+    assert_eq!(steady, warm, "the same frames, the same pairs");
+    assert!(
+        warm.0 > 20 && warm.1 > 5,
+        "the frames have pairs and contacts ({warm:?})"
+    );
+    assert_eq!(
+        info.count_total, 0,
+        "{} allocations ({} bytes) in the steady mixed frame loop",
+        info.count_total, info.bytes_total
+    );
+}
