@@ -15,7 +15,7 @@ use std::time::Duration;
 
 use criterion::Criterion;
 use motion_bound::ca::{time_of_impact, AnyPair, CaParams, Shape};
-use motion_bound::testkit::toi::Rng;
+use motion_bound::testkit::toi::{shape_fly_by, Rng};
 use motion_bound::{BallTree, Convex, HalfSpace, RigidMotion, Vec3};
 
 /// Queries per pair kind.
@@ -25,36 +25,7 @@ const QUERIES: usize = 30;
 fn fly_bys(seed: u64, ground: bool) -> Vec<(RigidMotion<f64>, RigidMotion<f64>)> {
     let mut rng = Rng::new(seed);
     (0..QUERIES)
-        .map(|q| {
-            let spin = [0.0, 2.0, 8.0][q % 3];
-            if ground {
-                let start = [
-                    rng.range(-0.5, 0.5),
-                    rng.range(0.8, 1.4),
-                    rng.range(-0.5, 0.5),
-                ];
-                let v = [
-                    rng.range(-1.0, 1.0),
-                    -rng.range(0.5, 2.0),
-                    rng.range(-1.0, 1.0),
-                ];
-                let w = rng.direction().map(|x| x * spin * rng.unit());
-                (
-                    RigidMotion::try_from_arrays(start, v, w).expect("motion"),
-                    RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3]).expect("ground"),
-                )
-            } else {
-                let start = rng.direction().map(|x| x * rng.range(1.1, 1.5));
-                let aim = rng.direction().map(|x| x * 0.4 * rng.unit());
-                let v = [0, 1, 2].map(|k| aim[k] - start[k]);
-                let wa = rng.direction().map(|x| x * spin * rng.unit());
-                let wb = rng.direction().map(|x| x * spin * 0.25 * rng.unit());
-                (
-                    RigidMotion::try_from_arrays(start, v, wa).expect("motion"),
-                    RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], wb).expect("motion"),
-                )
-            }
-        })
+        .map(|q| shape_fly_by(&mut rng, q, ground))
         .collect()
 }
 

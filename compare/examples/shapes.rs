@@ -19,8 +19,8 @@ mod shape_truth;
 use std::time::Instant;
 
 use motion_bound::ca::{time_of_impact, AnyPair, CaParams, Shape};
-use motion_bound::testkit::toi::Rng;
-use motion_bound::{BallTree, Convex, HalfSpace, RigidMotion, Vec3};
+use motion_bound::testkit::toi::{shape_fly_by, Rng};
+use motion_bound::{BallTree, Convex, HalfSpace, Vec3};
 use motion_bound_compare::parry::parry_motion;
 use parry3d_f64::math::Vector;
 use parry3d_f64::query::cast_shapes_nonlinear;
@@ -131,35 +131,8 @@ fn main() {
         let (mut om, mut ol, mut pm, mut pl, mut sampled) = (0, 0, 0, 0, 0);
         let mut unsupported = false;
         for q in 0..queries {
-            let spin = [0.0, 2.0, 8.0][q % 3];
             let ground_b = b.name == "ground";
-            let (ma, mb) = if ground_b {
-                let start = [
-                    rng.range(-0.5, 0.5),
-                    rng.range(0.8, 1.4),
-                    rng.range(-0.5, 0.5),
-                ];
-                let v = [
-                    rng.range(-1.0, 1.0),
-                    -rng.range(0.5, 2.0),
-                    rng.range(-1.0, 1.0),
-                ];
-                let w = rng.direction().map(|x| x * spin * rng.unit());
-                (
-                    RigidMotion::try_from_arrays(start, v, w).expect("motion"),
-                    RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3]).expect("ground"),
-                )
-            } else {
-                let start = rng.direction().map(|x| x * rng.range(1.1, 1.5));
-                let aim = rng.direction().map(|x| x * 0.4 * rng.unit());
-                let v = [0, 1, 2].map(|k| aim[k] - start[k]);
-                let wa = rng.direction().map(|x| x * spin * rng.unit());
-                let wb = rng.direction().map(|x| x * spin * 0.25 * rng.unit());
-                (
-                    RigidMotion::try_from_arrays(start, v, wa).expect("motion"),
-                    RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], wb).expect("motion"),
-                )
-            };
+            let (ma, mb) = shape_fly_by(&mut rng, q, ground_b);
             let params = CaParams::default().with_contact_distance(1e-3);
             let t0 = Instant::now();
             let ours = time_of_impact(

@@ -1,9 +1,8 @@
 //! Conservative advancement of a convex shape against a half-space.
 
-use crate::ca::driver::{placement_error, precision_limit};
-use crate::ca::shapes::certified_gap;
+use crate::ca::driver::placement_error;
+use crate::ca::shapes::{advance, certified_gap, closing};
 use crate::ca::{CaError, CaParams, CaStep, StepResult, Witness};
-use crate::rounding::step_down;
 use crate::{Convex, Float, HalfSpace, Point3, PreparedMotion, RigidMotion, Vec3};
 
 /// Conservative advancement of a convex shape (body A) against a half-space
@@ -98,27 +97,7 @@ impl<T: Float> CaStep<T> for HalfSpacePair<'_, T> {
         // The half-space's least point along `n` is its plane's: the support
         // of the point at its body origin (Lemma 12.3).
         let g = certified_gap((&self.shape, &pose_a, ea), (&plane, &pose_b, eb), n.get());
-        let kind = params.bound.cheap_kind();
-        let (mu_a, mu_b) = if params.one_sided {
-            (
-                a.probe(n).convex_rate(&self.shape, kind),
-                b.probe(-n).convex_rate(&plane, kind),
-            )
-        } else {
-            (
-                a.probe(n).convex_speed(&self.shape, kind),
-                b.probe(n).convex_speed(&plane, kind),
-            )
-        };
-        let clearance = params.clearance();
-        let step = step_down(g, clearance, mu_a, mu_b);
-        if let Some(limit) = precision_limit(step, clearance, (ea, eb), (reach_a, reach_b)) {
-            return limit;
-        }
-        StepResult::Advance {
-            step,
-            witness: Some(witness),
-            normal: Some(n),
-        }
+        let mu = closing((a, &self.shape), (b, &plane), n, params);
+        advance(g, mu, ((ea, eb), (reach_a, reach_b)), params, (witness, n))
     }
 }

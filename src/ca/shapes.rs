@@ -160,28 +160,59 @@ impl<T: Float> CaStep<T> for ShapePair<'_, T> {
         let (ea, reach_a) = placement_error(a.motion(), t, self.a.reach());
         let (eb, reach_b) = placement_error(b.motion(), t, self.b.reach());
         let g = certified_gap((&self.a, &pose_a, ea), (&self.b, &pose_b, eb), n.get());
-        let kind = params.bound.cheap_kind();
-        let (mu_a, mu_b) = if params.one_sided {
-            (
-                a.probe(n).convex_rate(&self.a, kind),
-                b.probe(-n).convex_rate(&self.b, kind),
-            )
-        } else {
-            (
-                a.probe(n).convex_speed(&self.a, kind),
-                b.probe(n).convex_speed(&self.b, kind),
-            )
-        };
-        let clearance = params.clearance();
-        let step = step_down(g, clearance, mu_a, mu_b);
-        if let Some(limit) = precision_limit(step, clearance, (ea, eb), (reach_a, reach_b)) {
-            return limit;
-        }
-        StepResult::Advance {
-            step,
-            witness: Some(witness(Some(n))),
-            normal: Some(n),
-        }
+        let mu = closing((a, &self.a), (b, &self.b), n, params);
+        advance(
+            g,
+            mu,
+            ((ea, eb), (reach_a, reach_b)),
+            params,
+            (witness(Some(n)), n),
+        )
+    }
+}
+
+/// The bounds on how fast the slab between shapes `A` and `B` along `n`
+/// (from A to B) closes: the one-sided rates of A along `n` and B along
+/// `-n` (Lemma 10.2), or, without one-sided bounds, their absolute speeds.
+pub(crate) fn closing<T: Float>(
+    (a, sa): (&PreparedMotion<T>, &Convex<'_, T>),
+    (b, sb): (&PreparedMotion<T>, &Convex<'_, T>),
+    n: Direction<T>,
+    params: &CaParams<T>,
+) -> (T, T) {
+    let kind = params.bound.cheap_kind();
+    if params.one_sided {
+        (
+            a.probe(n).convex_rate(sa, kind),
+            b.probe(-n).convex_rate(sb, kind),
+        )
+    } else {
+        (
+            a.probe(n).convex_speed(sa, kind),
+            b.probe(n).convex_speed(sb, kind),
+        )
+    }
+}
+
+/// The step from the certified gap `g` and the closing bounds `mu`, or the
+/// precision limit when it is zero and the placement (errors and reaches)
+/// cannot resolve the clearance.
+pub(crate) fn advance<T: Float>(
+    g: T,
+    mu: (T, T),
+    (err, reach): ((T, T), (T, T)),
+    params: &CaParams<T>,
+    (witness, n): (Witness<T>, Direction<T>),
+) -> StepResult<T> {
+    let clearance = params.clearance();
+    let step = step_down(g, clearance, mu.0, mu.1);
+    if let Some(limit) = precision_limit(step, clearance, err, reach) {
+        return limit;
+    }
+    StepResult::Advance {
+        step,
+        witness: Some(witness),
+        normal: Some(n),
     }
 }
 

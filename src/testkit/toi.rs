@@ -120,6 +120,41 @@ pub fn fly_by(rng: &mut Rng, reach_a: f64, reach_b: f64, spin: f64) -> FlyBy {
     }
 }
 
+/// The `q`-th fly-by of the shape pair benchmarks (`benches/shapes.rs`,
+/// `compare/examples/shapes.rs`): A from 1.1 to 1.5 away aimed within 0.4 of
+/// B's centre, spins of 0, 2 or 8 rad per unit time by `q`; or, with
+/// `ground`, A falling from 0.8 to 1.4 above a still ground at the origin.
+pub fn shape_fly_by(rng: &mut Rng, q: usize, ground: bool) -> (RigidMotion<f64>, RigidMotion<f64>) {
+    let spin = [0.0, 2.0, 8.0][q % 3];
+    if ground {
+        let start = [
+            rng.range(-0.5, 0.5),
+            rng.range(0.8, 1.4),
+            rng.range(-0.5, 0.5),
+        ];
+        let v = [
+            rng.range(-1.0, 1.0),
+            -rng.range(0.5, 2.0),
+            rng.range(-1.0, 1.0),
+        ];
+        let w = rng.direction().map(|x| x * spin * rng.unit());
+        (
+            RigidMotion::try_from_arrays(start, v, w).expect("finite"),
+            RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3]).expect("finite"),
+        )
+    } else {
+        let start = rng.direction().map(|x| x * rng.range(1.1, 1.5));
+        let aim = rng.direction().map(|x| x * 0.4 * rng.unit());
+        let v = [0, 1, 2].map(|k| aim[k] - start[k]);
+        let wa = rng.direction().map(|x| x * spin * rng.unit());
+        let wb = rng.direction().map(|x| x * spin * 0.25 * rng.unit());
+        (
+            RigidMotion::try_from_arrays(start, v, wa).expect("finite"),
+            RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], wb).expect("finite"),
+        )
+    }
+}
+
 /// The farthest vertex distance from the rotation centre.
 #[must_use]
 pub fn reach<T: Float>(mesh: &TriMesh<T>) -> f64 {
