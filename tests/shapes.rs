@@ -13,17 +13,17 @@
 //! the true first contact, and a query reporting later, or `Separated`,
 //! fails. `SHAPES_QUERIES` sets the queries per pair of kinds (default 3).
 
+#[path = "common/shape_truth.rs"]
+mod shape_truth;
+
 use motion_bound::ca::{
     time_of_impact, AnyPair, CaError, CaOutcome, CaParams, HalfSpacePair, MeshShapePair, Shape,
     ShapePair,
 };
 use motion_bound::scenes::{torus, TorusKnot};
-use motion_bound::testkit::ground_truth::place;
 use motion_bound::testkit::toi::Rng;
-use motion_bound::{
-    try_triangle_triangle, BallTree, Convex, HalfSpace, Point3, RigidMotion, TriMesh, Vec3,
-    VertexSet,
-};
+use motion_bound::{BallTree, Convex, HalfSpace, RigidMotion, TriMesh, Vec3, VertexSet};
+use shape_truth::Solid;
 
 /// Ground-truth samples over `[0, 1]`.
 const SAMPLES: usize = 200;
@@ -127,45 +127,22 @@ fn kinds(vertices: &'static [[f64; 3]]) -> Vec<Kind> {
 }
 
 /// The first sampled time at which the two shapes touch (their inscribed
-/// cores within the sum of the radii).
+/// cores within the sum of the radii): `shape_truth`'s, with its per-part
+/// and per-triangle culls.
 fn first_sampled_contact(
     a: &Kind,
     ma: &RigidMotion<f64>,
     b: &Kind,
     mb: &RigidMotion<f64>,
 ) -> Option<f64> {
-    let reach = |k: &Kind| {
-        k.triangles
-            .iter()
-            .flatten()
-            .map(|p| (p[0] * p[0] + p[1] * p[1] + p[2] * p[2]).sqrt())
-            .fold(0.0, f64::max)
-    };
-    let (ra, rb) = (reach(a), reach(b));
-    for s in 0..=SAMPLES {
-        let t = s as f64 / SAMPLES as f64;
-        let (ca, cb) = (place(ma, [0.0; 3], t), place(mb, [0.0; 3], t));
-        let d = [0, 1, 2].map(|k| cb[k] - ca[k]);
-        if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt() > ra + rb + a.radius + b.radius {
-            continue;
-        }
-        let placed = |k: &Kind, m: &RigidMotion<f64>| -> Vec<[Point3<f64>; 3]> {
-            k.triangles
-                .iter()
-                .map(|tri| tri.map(|p| Point3::from_array(place(m, p, t))))
-                .collect()
-        };
-        let (ta, tb) = (placed(a, ma), placed(b, mb));
-        let touch = a.radius + b.radius;
-        for x in &ta {
-            for y in &tb {
-                if try_triangle_triangle(x, y).expect("finite").distance <= touch {
-                    return Some(t);
-                }
-            }
-        }
+    shape_truth::first_sampled_contact(&solid(a), ma, &solid(b), mb, (0.0, 1.0), SAMPLES)
+}
+
+/// A kind's ground truth as `shape_truth`'s body.
+fn solid(k: &Kind) -> Solid {
+    Solid {
+        parts: vec![(k.triangles.clone(), k.radius)],
     }
-    None
 }
 
 #[test]
@@ -246,32 +223,15 @@ fn every_pair_of_shape_kinds_is_never_late_and_never_missed() {
     );
 }
 
-/// The first sampled time at which the shape's inscribed core comes within
-/// its radius of the ground plane `{x : (x - p(t)) . m <= 0}` (`p` the
-/// ground's placed origin, `m` its unit normal).
+/// The first sampled time at which the shape comes within its radius of the
+/// ground plane `{x : (x - p(t)) . m <= 0}`.
 fn first_sampled_landing(
     a: &Kind,
     ma: &RigidMotion<f64>,
     ground: &RigidMotion<f64>,
     m: [f64; 3],
 ) -> Option<f64> {
-    for s in 0..=SAMPLES {
-        let t = s as f64 / SAMPLES as f64;
-        let p = place(ground, [0.0; 3], t);
-        let lowest = a
-            .triangles
-            .iter()
-            .flatten()
-            .map(|&r| {
-                let x = place(ma, r, t);
-                (0..3).map(|k| (x[k] - p[k]) * m[k]).sum::<f64>()
-            })
-            .fold(f64::INFINITY, f64::min);
-        if lowest <= a.radius {
-            return Some(t);
-        }
-    }
-    None
+    shape_truth::first_sampled_landing(&solid(a), ma, ground, m, (0.0, 1.0), SAMPLES)
 }
 
 #[test]
@@ -568,35 +528,17 @@ struct Multi {
 }
 
 /// The first sampled time at which some part of `a` comes within the sum
-/// of radii of some part of `b` (inscribed, so a sampled contact is real).
+/// of radii of some part of `b`.
 fn first_sampled_multi(
     a: &Multi,
     ma: &RigidMotion<f64>,
     b: &Multi,
     mb: &RigidMotion<f64>,
 ) -> Option<f64> {
-    for s in 0..=SAMPLES {
-        let t = s as f64 / SAMPLES as f64;
-        let placed = |tris: &[[[f64; 3]; 3]], m: &RigidMotion<f64>| -> Vec<[Point3<f64>; 3]> {
-            tris.iter()
-                .map(|tri| tri.map(|p| Point3::from_array(place(m, p, t))))
-                .collect()
-        };
-        for (ta, ra) in &a.parts {
-            let pa = placed(ta, ma);
-            for (tb, rb) in &b.parts {
-                let pb = placed(tb, mb);
-                for x in &pa {
-                    for y in &pb {
-                        if try_triangle_triangle(x, y).expect("finite").distance <= ra + rb {
-                            return Some(t);
-                        }
-                    }
-                }
-            }
-        }
-    }
-    None
+    let solid = |m: &Multi| Solid {
+        parts: m.parts.clone(),
+    };
+    shape_truth::first_sampled_contact(&solid(a), ma, &solid(b), mb, (0.0, 1.0), SAMPLES)
 }
 
 /// Triangles mapped by a pose (the stored matrix and the translation).
