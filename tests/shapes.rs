@@ -761,3 +761,77 @@ fn bad_shapes_are_typed_errors() {
         Some(CaError::Unsupported)
     );
 }
+
+/// A contact declared by distance is a near contact in truth: at its time
+/// the exact ground truth (`shape_truth`, the cores as degenerate
+/// triangles placed by the testkit's own quaternions) finds the bodies
+/// within the contact distance. Regression: the closed-form closest points
+/// of point and segment cores ignored a placed shape's own pose (a
+/// compound's ball or capsule), so a contact was declared up to `0.05`
+/// early in a body with a turned start (never late: the steps' gaps were
+/// certified along the shape's placed supports). Found by
+/// `motion-bound-parry`'s ground truth on parry's off-axis capsules.
+#[test]
+fn a_contact_by_distance_is_within_the_contact_distance_for_placed_cores() {
+    use motion_bound::ca::ContactCriterion;
+    use motion_bound::{Isometry, Rotation};
+    let mut rng = Rng::new(317);
+    let params = CaParams::default();
+    let mut by_distance = 0;
+    for q in 0..200 {
+        let mut rotation = || {
+            Rotation::try_from_axis_angle(
+                Vec3::from_array(rng.direction()),
+                rng.range(0.0, core::f64::consts::PI),
+            )
+            .expect("rotation")
+        };
+        let (place_rotation, start_rotation) = (rotation(), rotation());
+        let offset = rng.direction().map(|x| x * rng.range(0.0, 0.3));
+        let pose = Isometry::try_new(place_rotation, Vec3::from_array(offset)).expect("pose");
+        let (shape, solid) = if q % 2 == 0 {
+            (Convex::try_capsule(0.3, 0.1), Solid::capsule(0.3, 0.1))
+        } else {
+            (Convex::try_ball(0.15), Solid::ball(0.15))
+        };
+        let shape = shape.expect("shape").try_placed(pose).expect("placed");
+        let solid = solid.placed(&pose);
+        let spin = rng.direction().map(|x| x * rng.range(0.0, 6.0));
+        let a = RigidMotion::try_from_start(
+            Isometry::try_new(start_rotation, Vec3::ZERO).expect("start"),
+            Vec3::ZERO,
+            Vec3::from_array(spin),
+            1.0,
+        )
+        .expect("motion");
+        let from = rng.direction().map(|x| x * 1.5);
+        let b = RigidMotion::try_from_arrays(from, from.map(|x| -x), [0.0; 3]).expect("motion");
+        let ball = Convex::try_ball(0.3).expect("ball");
+        let mut pair = AnyPair::try_new(Shape::Convex(shape), Shape::Convex(ball)).expect("pair");
+        let report = time_of_impact(&mut pair, &a, &b, &params).expect("query");
+        if let CaOutcome::Contact {
+            contact,
+            criterion: ContactCriterion::Distance,
+        } = report.outcome
+        {
+            by_distance += 1;
+            // Grown by the contact distance (and a hair for the samples'
+            // own rounding), the bodies touch at the reported time.
+            let grow = |mut s: Solid| {
+                for (_, r) in &mut s.parts {
+                    *r += params.contact_distance * (1.0 + 1e-9) + 1e-12;
+                }
+                s
+            };
+            assert!(
+                shape_truth::touch_at(&grow(solid), &a, &Solid::ball(0.3), &b, contact.time),
+                "query {q}: contact declared at {} beyond the contact distance",
+                contact.time
+            );
+        }
+    }
+    assert!(
+        by_distance > 150,
+        "{by_distance} of 200 contacts by distance"
+    );
+}

@@ -67,7 +67,9 @@ impl<T: Float> SupportMap<T> for PlacedCore<'_, '_, T> {
     }
 }
 
-/// The ends of a point or segment core, placed (`None` for other cores).
+/// The ends of a point or segment core, placed in the body frame by the
+/// shape's own placement (a compound's part) and in the world by `pose`
+/// (`None` for other cores).
 fn segment<T: Float>(shape: &Convex<'_, T>, pose: &Pose<T>) -> Option<[Vec3<T>; 2]> {
     let z = T::ZERO;
     let h = match *shape.core() {
@@ -75,7 +77,7 @@ fn segment<T: Float>(shape: &Convex<'_, T>, pose: &Pose<T>) -> Option<[Vec3<T>; 
         Core::Segment { half_height } => half_height,
         _ => return None,
     };
-    let end = |y: T| pose.transform_point(Vec3::new(z, y, z));
+    let end = |y: T| pose.transform_point(shape.place_core_point(Vec3::new(z, y, z)));
     Some([end(-h), end(h)])
 }
 

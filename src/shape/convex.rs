@@ -402,6 +402,16 @@ impl<'a, T: Float> Convex<'a, T> {
         &self.core
     }
 
+    /// A core point placed in the body frame: `M k + t` for a placed shape
+    /// (the same rounded placement as [`core_support_point`](Self::core_support_point)),
+    /// `k` itself otherwise.
+    pub(crate) fn place_core_point(&self, k: Vec3<T>) -> Vec3<T> {
+        match self.placed {
+            Some(pose) => pose.rotation().rotate(k) + pose.translation(),
+            None => k,
+        }
+    }
+
     /// The core's support along the body-frame direction `d`: a point of
     /// the core maximising `r . d` (any one on ties).
     fn local_support_point(&self, d: Vec3<T>) -> Point3<T> {
