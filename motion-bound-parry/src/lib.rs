@@ -1,0 +1,37 @@
+//! Certified continuous collision detection for [parry] and [rapier] users.
+//!
+//! [parry]: https://parry.rs
+//! [rapier]: https://rapier.rs
+//!
+//! Parry's shapes and `NonlinearRigidMotion`s in, parry's `ShapeCastHit`
+//! out, answered by `motion-bound`'s conservative advancement: a reported
+//! time of impact is never later than the first contact, and "no impact" is
+//! certified, floating-point rounding included.
+//!
+//! - [`cast_shapes_nonlinear`]: parry's function of that name, certified.
+//! - [`ShapeCache`]: shapes converted once (a mesh's tree built once per
+//!   shared shape), and the same cast through them.
+//! - [`CertifiedDispatcher`]: a query dispatcher for rapier's narrow phase
+//!   whose `cast_shapes_nonlinear` is the certified one.
+//!
+//! `f64` (the default feature, `parry3d-f64`) is re-exported at the root;
+//! `f32` (`parry3d`) is the module [`f32`](crate::f32) (re-exported at the
+//! root when `f64` is off).
+#![forbid(unsafe_code)]
+#![cfg_attr(docsrs, feature(doc_cfg))]
+
+#[cfg(feature = "f32")]
+pub mod f32;
+#[cfg(feature = "f64")]
+pub mod f64;
+
+#[cfg(feature = "f64")]
+pub use crate::f64::*;
+
+#[cfg(all(feature = "f32", not(feature = "f64")))]
+pub use crate::f32::*;
+
+/// The README's examples, run as doctests.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
