@@ -1,0 +1,674 @@
+//! Rapier's continuous collision detection, with and without the certified
+//! cast, in five stress worlds, judged by an independent checker.
+//!
+//! ```text
+//! cargo run --release -p motion-bound-parry --example rapier_worlds -- --launches 20
+//! ```
+//!
+//! Each world is launched `--launches` times (default 20; each launch a
+//! seed: random start poses, velocities and spins), each launch stepped 150
+//! times at `dt = 1/60` with gravity off and CCD enabled on every dynamic
+//! body, twice with the same launches:
+//!
+//! - **default**: rapier's narrow phase with parry's dispatcher, plain
+//!   shapes;
+//! - **ours**: the narrow phase with [`CertifiedDispatcher`], every dynamic
+//!   collider's shape wrapped in [`Swept`] (fixed ones plain), so that
+//!   rapier hands all CCD pairs of the dynamic bodies to the certified cast.
+//!
+//! The worlds:
+//!
+//! - `board`: a thin board (a 2 x 0.04 x 0.6 cuboid) flying at 8 to 30 m/s
+//!   and spinning at 20 to 80 rad/s at a thin wall (0.04 thick);
+//! - `bullets`: two small balls or cubes flying head-on at 15 to 60 m/s each;
+//! - `plate`: a small ball (or spinning cube) at 20 to 150 m/s at a fixed
+//!   triangle-mesh plate (zero thickness);
+//! - `mesh`: a dynamic triangle-mesh sphere (radius 0.3) at 10 to 60 m/s,
+//!   spinning, at a wall 0.1 thick;
+//! - `cylinder`: a spinning cylinder or cone at 10 to 50 m/s at a thin wall.
+//!
+//! # The checker
+//!
+//! It does not use the cast being judged. For each step and each pair (a
+//! dynamic body and any other body), the poses before and after `step()`
+//! are interpolated as a constant-velocity motion about each body's centre
+//! of mass (centre lerped, rotation slerped), sampled densely (at least 64
+//! samples, and enough that no point of either body moves more than half
+//! the tolerance between samples), and at each sample the penetration depth
+//! is parry's static `contact` (`-dist`, on the plain shapes). With the
+//! tolerance `TOL = 0.01`:
+//!
+//! - **tunnelled**: the body's centre of mass crosses the mid-plane of a
+//!   thin fixed obstacle inside its extent during the step, or the start and
+//!   end poses penetrate by at most `TOL` while some sample between them
+//!   penetrates by more (the body passed through, or into and out of, the
+//!   other within the step);
+//! - **late**: not a crossing, and the end pose penetrates by more than
+//!   `TOL` (the step's contact was caught, but the body was stopped deep).
+//!
+//! A world's line counts launches with at least one such step, out of
+//! `--launches`, and the mean wall-clock time of `step()`.
+//!
+//! # What "ours" can and cannot fix
+//!
+//! The certified cast answers the question rapier asks: when, along the
+//! step's motion, two shapes first touch, never later than they do and
+//! never "no impact" when there is one. It can fix a tunnel that comes from
+//! rapier not asking (a moving triangle mesh, which rapier never sweeps:
+//! the `mesh` world) or from a cast answering too late or not at all.
+//! It cannot fix:
+//!
+//! - what rapier never asks: it casts nothing between two bullets (two
+//!   CCD-enabled dynamic bodies), so the `bullets` world tunnels the same
+//!   with any dispatcher;
+//! - what rapier does with the answer: it ignores a hit at fraction `0`
+//!   (shapes already touching at the start of the sub-step), and it clamps
+//!   a body along its own interpolation of the motion, which is not the
+//!   motion the cast was asked about; a body can end such a step in the
+//!   other, deeper than `TOL` ("late"). That lateness is the engine's.
+//!
+//! After the world lines: the dispatcher's counts per world (casts answered
+//! by the certified cast, casts handed to parry's), and the cost of
+//! installing the dispatcher with no shape wrapped (the same launches,
+//! without the checker): rapier then calls it only for cylinders, cones and
+//! half-spaces, so in the other worlds it only forwards queries to parry's.
+
+use std::time::Instant;
+
+use motion_bound_parry::{CertifiedDispatcher, DispatchStats, Swept};
+use parry3d_f64::math::{Pose, Rotation, Vector};
+use parry3d_f64::query;
+use parry3d_f64::shape::{Ball, Capsule, Shape, SharedShape};
+use rapier3d_f64::prelude::{
+    ColliderBuilder, NarrowPhase, PhysicsWorld, RigidBodyBuilder, RigidBodyHandle,
+};
+
+/// The time step.
+pub(crate) const DT: f64 = 1.0 / 60.0;
+/// The checker's penetration tolerance.
+pub(crate) const TOL: f64 = 0.01;
+/// Steps per launch.
+pub(crate) const STEPS: usize = 150;
+
+/// A small deterministic generator (splitmix64).
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        (z >> 11) as f64 / (1u64 << 53) as f64
+    }
+
+    fn range(&mut self, a: f64, b: f64) -> f64 {
+        a + (b - a) * self.next()
+    }
+
+    fn unit(&mut self) -> Vector {
+        loop {
+            let v = Vector::new(
+                self.range(-1., 1.),
+                self.range(-1., 1.),
+                self.range(-1., 1.),
+            );
+            let l = v.length();
+            if l > 0.1 && l <= 1.0 {
+                return v / l;
+            }
+        }
+    }
+
+    fn rot(&mut self) -> Rotation {
+        let axis = self.unit();
+        Rotation::from_axis_angle(axis, self.range(0.0, std::f64::consts::PI))
+    }
+}
+
+/// The worlds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum World {
+    /// A spinning thin board at a thin wall.
+    Board,
+    /// Two bullets head-on.
+    Bullets,
+    /// A small fast ball or cube at a fixed triangle-mesh plate.
+    Plate,
+    /// A fast dynamic triangle-mesh sphere at a wall.
+    Mesh,
+    /// A spinning cylinder or cone at a thin wall.
+    Cylinder,
+}
+
+impl World {
+    /// Every world, in the order printed.
+    pub(crate) const ALL: [Self; 5] = [
+        Self::Board,
+        Self::Bullets,
+        Self::Plate,
+        Self::Mesh,
+        Self::Cylinder,
+    ];
+
+    /// The world's short name.
+    pub(crate) fn name(self) -> &'static str {
+        match self {
+            Self::Board => "board",
+            Self::Bullets => "bullets",
+            Self::Plate => "plate",
+            Self::Mesh => "mesh",
+            Self::Cylinder => "cylinder",
+        }
+    }
+}
+
+/// How a world is run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Mode {
+    /// Parry's dispatcher, plain shapes.
+    Default,
+    /// [`CertifiedDispatcher`], plain shapes.
+    Installed,
+    /// [`CertifiedDispatcher`], dynamic colliders wrapped in [`Swept`].
+    Ours,
+}
+
+/// A thin fixed obstacle: its local normal axis and half extents, for the
+/// crossing test.
+#[derive(Clone, Copy)]
+struct Thin {
+    axis: usize,
+    half: Vector,
+}
+
+/// One body of a world.
+struct Spec {
+    shape: SharedShape,
+    pose: Pose,
+    linvel: Vector,
+    angvel: Vector,
+    dynamic: bool,
+    thin: Option<Thin>,
+}
+
+fn dynamic(shape: SharedShape, pose: Pose, linvel: Vector, angvel: Vector) -> Spec {
+    Spec {
+        shape,
+        pose,
+        linvel,
+        angvel,
+        dynamic: true,
+        thin: None,
+    }
+}
+
+fn wall(half_thick: f64, half: f64) -> Spec {
+    Spec {
+        shape: SharedShape::cuboid(half_thick, half, half),
+        pose: Pose::IDENTITY,
+        linvel: Vector::ZERO,
+        angvel: Vector::ZERO,
+        dynamic: false,
+        thin: Some(Thin {
+            axis: 0,
+            half: Vector::new(half_thick, half, half),
+        }),
+    }
+}
+
+/// A triangle-mesh sphere of radius `r`.
+pub(crate) fn sphere_mesh(r: f64) -> SharedShape {
+    let (v, t) = Ball::new(r).to_trimesh(12, 12);
+    SharedShape::trimesh(v, t).expect("a valid sphere mesh")
+}
+
+/// A flat square triangle mesh in the plane `y = 0`.
+fn plate_mesh(half: f64, n: u32) -> SharedShape {
+    let mut v = Vec::new();
+    let mut t = Vec::new();
+    let step = 2.0 * half / f64::from(n);
+    for i in 0..=n {
+        for j in 0..=n {
+            v.push(Vector::new(
+                -half + step * f64::from(i),
+                0.0,
+                -half + step * f64::from(j),
+            ));
+        }
+    }
+    let id = |i: u32, j: u32| i * (n + 1) + j;
+    for i in 0..n {
+        for j in 0..n {
+            t.push([id(i, j), id(i, j + 1), id(i + 1, j)]);
+            t.push([id(i + 1, j), id(i, j + 1), id(i + 1, j + 1)]);
+        }
+    }
+    SharedShape::trimesh(v, t).expect("a valid plate mesh")
+}
+
+/// The bodies of `world`'s launch `seed`.
+fn build(world: World, seed: u64) -> Vec<Spec> {
+    let w = World::ALL.iter().position(|x| *x == world).unwrap_or(0) as u64;
+    let mut r = Rng(seed.wrapping_mul(7919).wrapping_add(w * 1_000_003));
+    let jitter = |r: &mut Rng, s: f64| Vector::new(0.0, r.range(-s, s), r.range(-s, s));
+    match world {
+        World::Board => {
+            let pos = Vector::new(
+                -2.5 + r.range(-0.5, 0.5),
+                r.range(-0.5, 0.5),
+                r.range(-0.5, 0.5),
+            );
+            let v = r.range(8.0, 30.0);
+            let lin = Vector::new(v, 0.0, 0.0) + jitter(&mut r, 0.1 * v);
+            let ang = r.unit() * r.range(20.0, 80.0);
+            vec![
+                wall(0.02, 4.0),
+                dynamic(
+                    SharedShape::cuboid(1.0, 0.02, 0.3),
+                    Pose::from_parts(pos, r.rot()),
+                    lin,
+                    ang,
+                ),
+            ]
+        }
+        World::Bullets => {
+            let shape = if seed.is_multiple_of(2) {
+                SharedShape::ball(0.1)
+            } else {
+                SharedShape::cuboid(0.1, 0.1, 0.1)
+            };
+            let (v1, v2) = (r.range(15.0, 60.0), r.range(15.0, 60.0));
+            let off = jitter(&mut r, 0.08);
+            let a = Pose::from_parts(Vector::new(-2.0, 0.0, 0.0), r.rot());
+            let b = Pose::from_parts(Vector::new(2.0, 0.0, 0.0) + off, r.rot());
+            vec![
+                dynamic(shape.clone(), a, Vector::new(v1, 0.0, 0.0), Vector::ZERO),
+                dynamic(shape, b, Vector::new(-v2, 0.0, 0.0), Vector::ZERO),
+            ]
+        }
+        World::Plate => {
+            let (shape, ang) = if seed.is_multiple_of(2) {
+                (SharedShape::ball(0.05), Vector::ZERO)
+            } else {
+                (
+                    SharedShape::cuboid(0.05, 0.05, 0.05),
+                    r.unit() * r.range(10.0, 60.0),
+                )
+            };
+            let v = r.range(20.0, 150.0);
+            let tilt = Vector::new(r.range(-0.3, 0.3), 0.0, r.range(-0.3, 0.3));
+            let lin = (Vector::new(0.0, -1.0, 0.0) + tilt).normalize() * v;
+            let pos = Vector::new(r.range(-0.5, 0.5), 1.5, r.range(-0.5, 0.5));
+            vec![
+                Spec {
+                    shape: plate_mesh(2.0, 4),
+                    pose: Pose::IDENTITY,
+                    linvel: Vector::ZERO,
+                    angvel: Vector::ZERO,
+                    dynamic: false,
+                    thin: Some(Thin {
+                        axis: 1,
+                        half: Vector::new(2.0, 0.0, 2.0),
+                    }),
+                },
+                dynamic(shape, Pose::from_parts(pos, r.rot()), lin, ang),
+            ]
+        }
+        World::Mesh => {
+            let sp = r.range(10.0, 60.0);
+            let lin = Vector::new(sp, 0.0, 0.0) + jitter(&mut r, 0.1 * sp);
+            let pos = Vector::new(-3.0, r.range(-0.5, 0.5), r.range(-0.5, 0.5));
+            vec![
+                wall(0.05, 4.0),
+                dynamic(
+                    sphere_mesh(0.3),
+                    Pose::from_parts(pos, r.rot()),
+                    lin,
+                    r.unit() * r.range(0.0, 20.0),
+                ),
+            ]
+        }
+        World::Cylinder => {
+            let shape = if seed.is_multiple_of(2) {
+                SharedShape::cylinder(0.3, 0.05)
+            } else {
+                SharedShape::cone(0.3, 0.08)
+            };
+            let sp = r.range(10.0, 50.0);
+            let lin = Vector::new(sp, 0.0, 0.0) + jitter(&mut r, 0.1 * sp);
+            let pos = Vector::new(-2.5, r.range(-0.5, 0.5), r.range(-0.5, 0.5));
+            vec![
+                wall(0.02, 4.0),
+                dynamic(
+                    shape,
+                    Pose::from_parts(pos, r.rot()),
+                    lin,
+                    r.unit() * r.range(20.0, 80.0),
+                ),
+            ]
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------
+// The independent checker.
+
+/// A body as the checker sees it: the plain shape, its centre of mass and
+/// its reach from it.
+struct Geo {
+    shape: SharedShape,
+    com: Vector,
+    reach: f64,
+    dynamic: bool,
+    thin: Option<Thin>,
+}
+
+impl Geo {
+    fn new(s: &Spec) -> Self {
+        let com = s.shape.mass_properties(1.0).local_com;
+        let aabb = s.shape.compute_local_aabb();
+        let reach = aabb
+            .vertices()
+            .iter()
+            .map(|c| (*c - com).length())
+            .fold(0.0, f64::max);
+        Self {
+            shape: s.shape.clone(),
+            com,
+            reach,
+            dynamic: s.dynamic,
+            thin: s.thin,
+        }
+    }
+}
+
+/// Constant-velocity motion about the centre of mass: centre lerped,
+/// rotation slerped.
+fn interp(p0: &Pose, p1: &Pose, com: Vector, t: f64) -> Pose {
+    let c = p0.transform_point(com).lerp(p1.transform_point(com), t);
+    let q = p0.rotation.slerp(p1.rotation, t).normalize();
+    Pose::from_parts(c - q * com, q)
+}
+
+fn rot_angle(a: &Rotation, b: &Rotation) -> f64 {
+    2.0 * a.dot(*b).abs().min(1.0).acos()
+}
+
+/// Penetration depth (`0` when apart), by parry's static contact query.
+fn pen(pa: &Pose, ga: &dyn Shape, pb: &Pose, gb: &dyn Shape) -> f64 {
+    match query::contact(pa, ga, pb, gb, 0.0) {
+        Ok(Some(c)) => (-c.dist).max(0.0),
+        Ok(None) => 0.0,
+        Err(_) => panic!("the checker met a pair parry's contact does not take"),
+    }
+}
+
+/// One pair's verdict over one step.
+#[derive(Default, Clone, Copy)]
+struct Verdict {
+    tunnelled: bool,
+    late: bool,
+}
+
+fn check_pair(a: &Geo, a0: &Pose, a1: &Pose, b: &Geo, b0: &Pose, b1: &Pose) -> Verdict {
+    let ca0 = a0.transform_point(a.com);
+    let ca1 = a1.transform_point(a.com);
+    let cb0 = b0.transform_point(b.com);
+    let cb1 = b1.transform_point(b.com);
+    // Quick rejection: A's swept volume is inside the capsule (ca0, ca1,
+    // reach), B's too when it moves.
+    let cap_a = Capsule::new(ca0, ca1, a.reach);
+    let far = if b.dynamic {
+        let cap_b = Capsule::new(cb0, cb1, b.reach);
+        query::distance(&Pose::IDENTITY, &cap_a, &Pose::IDENTITY, &cap_b)
+            .expect("capsules")
+            .distance
+            > TOL
+    } else {
+        query::distance(&Pose::IDENTITY, &cap_a, b0, b.shape.as_ref())
+            .expect("a capsule and a fixed shape")
+            .distance
+            > TOL
+    };
+    // A crossing of a thin fixed obstacle's mid-plane by A's centre of mass.
+    let mut crossed = false;
+    if let (Some(thin), false) = (b.thin, b.dynamic) {
+        let l0 = b0.inverse_transform_point(ca0);
+        let l1 = b0.inverse_transform_point(ca1);
+        let (s0, s1) = (l0[thin.axis], l1[thin.axis]);
+        if s0 * s1 < 0.0 {
+            let l = l0.lerp(l1, s0 / (s0 - s1));
+            crossed = (0..3).all(|k| k == thin.axis || l[k].abs() <= thin.half[k]);
+        }
+    }
+    if far && !crossed {
+        return Verdict::default();
+    }
+    let disp = (ca1 - ca0).length()
+        + rot_angle(&a0.rotation, &a1.rotation) * a.reach
+        + (cb1 - cb0).length()
+        + rot_angle(&b0.rotation, &b1.rotation) * b.reach;
+    let n = ((disp / (0.5 * TOL)).ceil() as usize).clamp(64, 50_000);
+    let (ga, gb) = (a.shape.as_ref(), b.shape.as_ref());
+    let p_start = pen(a0, ga, b0, gb);
+    let p_end = pen(a1, ga, b1, gb);
+    let mut p_mid: f64 = 0.0;
+    if !far {
+        for k in 1..n {
+            let t = k as f64 / n as f64;
+            let pa = interp(a0, a1, a.com, t);
+            let pb = interp(b0, b1, b.com, t);
+            p_mid = p_mid.max(pen(&pa, ga, &pb, gb));
+            if p_mid > TOL && p_start <= TOL {
+                break; // the verdict is decided
+            }
+        }
+    }
+    Verdict {
+        tunnelled: crossed || (p_end <= TOL && p_start <= TOL && p_mid > TOL),
+        late: !crossed && p_end > TOL,
+    }
+}
+
+// ---------------------------------------------------------------------------
+// Running a world.
+
+/// A world's counts over its launches.
+#[derive(Debug, Default, Clone, Copy)]
+pub(crate) struct Tally {
+    /// Launches run.
+    pub(crate) launches: usize,
+    /// Steps run.
+    pub(crate) steps: usize,
+    /// Launches with a tunnelled step.
+    pub(crate) tunnelled: usize,
+    /// Launches with a late step.
+    pub(crate) late: usize,
+    /// Seconds spent in `step()`.
+    pub(crate) step_secs: f64,
+    /// The dispatcher's counts (`Installed` and `Ours`).
+    pub(crate) stats: DispatchStats,
+}
+
+impl Tally {
+    /// Mean milliseconds per step.
+    pub(crate) fn ms_per_step(&self) -> f64 {
+        1e3 * self.step_secs / self.steps.max(1) as f64
+    }
+}
+
+fn make_world(
+    specs: &[Spec],
+    mode: Mode,
+    dispatcher: &CertifiedDispatcher,
+) -> (PhysicsWorld, Vec<RigidBodyHandle>) {
+    let mut w = PhysicsWorld {
+        gravity: Vector::ZERO,
+        ..PhysicsWorld::default()
+    };
+    w.integration_parameters.dt = DT;
+    if mode != Mode::Default {
+        w.narrow_phase = NarrowPhase::with_query_dispatcher(dispatcher.clone());
+    }
+    let mut handles = Vec::new();
+    for s in specs {
+        let (rb, shape) = if s.dynamic {
+            let rb = RigidBodyBuilder::dynamic()
+                .pose(s.pose)
+                .linvel(s.linvel)
+                .angvel(s.angvel)
+                .ccd_enabled(true)
+                .can_sleep(false);
+            let shape = if mode == Mode::Ours {
+                Swept::shared(s.shape.clone())
+            } else {
+                s.shape.clone()
+            };
+            (rb, shape)
+        } else {
+            (RigidBodyBuilder::fixed().pose(s.pose), s.shape.clone())
+        };
+        let (h, _) = w.insert(rb, ColliderBuilder::new(shape).restitution(0.3));
+        handles.push(h);
+    }
+    (w, handles)
+}
+
+/// Runs `world`'s launches `0..launches` of `steps` steps each in `mode`,
+/// judged by the checker when `check`; `verbose` prints each failing step.
+pub(crate) fn run_world(
+    world: World,
+    mode: Mode,
+    launches: u64,
+    steps: usize,
+    check: bool,
+    verbose: bool,
+) -> Tally {
+    let dispatcher = CertifiedDispatcher::new();
+    let mut t = Tally::default();
+    for seed in 0..launches {
+        let specs = build(world, seed);
+        let geos: Vec<Geo> = specs.iter().map(Geo::new).collect();
+        let (mut w, hs) = make_world(&specs, mode, &dispatcher);
+        let (mut tunnelled, mut late) = (false, false);
+        for step in 0..steps {
+            let before: Vec<Pose> = hs.iter().map(|h| *w.bodies[*h].position()).collect();
+            let t0 = Instant::now();
+            w.step();
+            t.step_secs += t0.elapsed().as_secs_f64();
+            t.steps += 1;
+            if !check {
+                continue;
+            }
+            let after: Vec<Pose> = hs.iter().map(|h| *w.bodies[*h].position()).collect();
+            for i in 0..geos.len() {
+                if !geos[i].dynamic {
+                    continue;
+                }
+                for j in 0..geos.len() {
+                    if j == i || (geos[j].dynamic && j < i) {
+                        continue;
+                    }
+                    let v = check_pair(
+                        &geos[i], &before[i], &after[i], &geos[j], &before[j], &after[j],
+                    );
+                    if verbose && (v.tunnelled || v.late) {
+                        eprintln!(
+                            "{} {mode:?} launch {seed} step {step}: bodies {i} {j} {}",
+                            world.name(),
+                            if v.tunnelled { "tunnelled" } else { "late" }
+                        );
+                    }
+                    tunnelled |= v.tunnelled;
+                    late |= v.late;
+                }
+            }
+        }
+        t.launches += 1;
+        t.tunnelled += usize::from(tunnelled);
+        t.late += usize::from(late);
+    }
+    t.stats = dispatcher.stats();
+    t
+}
+
+fn main() {
+    let mut launches: u64 = 20;
+    let mut steps = STEPS;
+    let mut verbose = false;
+    let mut only: Option<String> = None;
+    let mut args = std::env::args().skip(1);
+    while let Some(a) = args.next() {
+        match a.as_str() {
+            "--launches" => {
+                launches = args
+                    .next()
+                    .and_then(|s| s.parse().ok())
+                    .expect("--launches N")
+            }
+            "--steps" => steps = args.next().and_then(|s| s.parse().ok()).expect("--steps N"),
+            "--verbose" => verbose = true,
+            "--world" => only = Some(args.next().expect("--world NAME")),
+            other => panic!(
+                "unknown argument {other} (--launches N, --steps N, --world NAME, --verbose)"
+            ),
+        }
+    }
+    println!(
+        "{launches} launches x {steps} steps per world, dt 1/60, gravity off, CCD on, TOL {TOL}"
+    );
+    let worlds: Vec<World> = World::ALL
+        .into_iter()
+        .filter(|w| only.as_deref().is_none_or(|o| o == w.name()))
+        .collect();
+    let mut stats = Vec::new();
+    for &world in &worlds {
+        let d = run_world(world, Mode::Default, launches, steps, true, verbose);
+        let o = run_world(world, Mode::Ours, launches, steps, true, verbose);
+        println!(
+            "world {}: tunnelled default {} ours {}, late default {} ours {}, \
+             ms per step default {:.4} ours {:.4}",
+            world.name(),
+            d.tunnelled,
+            o.tunnelled,
+            d.late,
+            o.late,
+            d.ms_per_step(),
+            o.ms_per_step(),
+        );
+        stats.push((world, o.stats));
+    }
+    for (world, s) in stats {
+        println!(
+            "stats {}: certified casts {}, handed to parry {}",
+            world.name(),
+            s.certified,
+            s.handed_to_parry
+        );
+    }
+    // The cost of installing the dispatcher with nothing wrapped: the same
+    // launches, unchecked, default and installed alternated per world.
+    let (mut d_secs, mut i_secs, mut n) = (0.0, 0.0, 0);
+    for &world in &worlds {
+        let d = run_world(world, Mode::Default, launches, steps, false, false);
+        let i = run_world(world, Mode::Installed, launches, steps, false, false);
+        println!(
+            "installed, nothing wrapped, {}: ms per step default {:.4} installed {:.4} \
+             (certified casts {})",
+            world.name(),
+            d.ms_per_step(),
+            i.ms_per_step(),
+            i.stats.certified,
+        );
+        d_secs += d.step_secs;
+        i_secs += i.step_secs;
+        n += d.steps;
+    }
+    println!(
+        "installed, nothing wrapped, all worlds: ms per step default {:.4} installed {:.4}",
+        1e3 * d_secs / n.max(1) as f64,
+        1e3 * i_secs / n.max(1) as f64,
+    );
+}
