@@ -8,7 +8,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::{Arc, Mutex, PoisonError, Weak};
 
 use motion_bound::ca::{
-    time_of_impact, AnyPair, CaError, CaOutcome, CaParams, Compound, ContactCriterion,
+    time_of_impact, AnyPair, CaError, CaOutcome, CaParams, CaReport, Compound, ContactCriterion,
     MeshWorkspace, Part, Shape as Ours,
 };
 use motion_bound::{
@@ -680,6 +680,13 @@ impl ShapeCache {
 ///   [`ShapeCastStatus::Converged`]); witnesses and normals in each shape's
 ///   local frame, as parry's. Touching at `start_time`: the hit at
 ///   `start_time` with [`ShapeCastStatus::PenetratingOrWithinTargetDist`].
+///   Shapes apart at `start_time` but within the contact distance are
+///   asked again with a contact distance a quarter of the gap found (up to
+///   four times), so that, as with parry's cast, a hit at `start_time`
+///   means shapes touching (or closer than the last contact distance
+///   tried), not merely close: rapier ignores a hit at fraction `0`, and a
+///   body its CCD has just stopped short of a wall starts its next step
+///   within the contact distance of it.
 ///   A query undecided from some time on (its iteration or work budget ran
 ///   out, or the placement's rounding cannot resolve the contact distance)
 ///   is a possible contact at that time, [`ShapeCastStatus::OutOfIterations`]
@@ -724,6 +731,10 @@ pub fn cast_shapes_nonlinear(
     .0
 }
 
+/// How many times a cast starting within the contact distance, but apart,
+/// is asked again with a contact distance a quarter of the gap found.
+const RESOLVE_ATTEMPTS: u32 = 4;
+
 /// The certified cast of two converted bodies, with the scratch space
 /// handed back.
 #[allow(clippy::too_many_arguments)]
@@ -764,9 +775,27 @@ fn cast_bodies(
     let mut ws = Some(ws);
     let report = b1.with_shape(|s1| {
         b2.with_shape(|s2| {
-            let pair = AnyPair::try_new(s1, s2)?.with_workspace(ws.take().unwrap_or_default());
-            let mut pair = pair;
-            let r = time_of_impact(&mut pair, &m1, &m2, params);
+            let mut pair = AnyPair::try_new(s1, s2)?.with_workspace(ws.take().unwrap_or_default());
+            let mut r = time_of_impact(&mut pair, &m1, &m2, params);
+            // Within the contact distance at the start but apart: asked
+            // again with a contact distance below the gap, so that a
+            // contact at `start_time` means touching (parry's meaning),
+            // and the answer is still never later than the first contact.
+            let mut p = *params;
+            for _ in 0..RESOLVE_ATTEMPTS {
+                let gap = match &r {
+                    Ok(CaReport {
+                        outcome: CaOutcome::InitialContact(c),
+                        ..
+                    }) => c.witness.map_or(0.0, |w| w.distance),
+                    _ => break,
+                };
+                p.contact_distance = gap / 4.0;
+                if gap <= 0.0 || p.validate().is_err() {
+                    break;
+                }
+                r = time_of_impact(&mut pair, &m1, &m2, &p);
+            }
             ws = Some(pair.into_workspace());
             r
         })
@@ -1052,7 +1081,9 @@ impl QueryDispatcher for CertifiedDispatcher {
                 Ok(hit)
             }
             Err(_) => {
-                self.counters.handed_to_parry.fetch_add(1, Ordering::Relaxed);
+                self.counters
+                    .handed_to_parry
+                    .fetch_add(1, Ordering::Relaxed);
                 DefaultQueryDispatcher.cast_shapes_nonlinear(
                     motion1,
                     Swept::see_through(g1),
