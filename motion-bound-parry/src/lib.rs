@@ -28,6 +28,9 @@ pub mod f64;
 #[cfg(feature = "f64")]
 pub use crate::f64::*;
 
+#[cfg(feature = "rapier")]
+pub mod rapier;
+
 #[cfg(all(feature = "f32", not(feature = "f64")))]
 pub use crate::f32::*;
 
