@@ -67,11 +67,37 @@
 //!   motion the cast was asked about; a body can end such a step in the
 //!   other, deeper than `TOL` ("late"). That lateness is the engine's.
 //!
+//! Both are seen in the `cylinder` world, where rapier already hands the
+//! casts to the dispatcher (default: parry's cast; ours: the certified one),
+//! and where ours can tunnel in a launch or two as the default does. Two
+//! such launches, traced cast by cast (the asked motion, our answer,
+//! parry's, and a sampled truth): in one, our hit left a gap of `8e-5`
+//! along the asked motion, rapier's clamped pose (along its own path) was
+//! touching, the next step's cast (touching at its start) answered `0`,
+//! rapier ignored it and the spinning cone passed through the wall; in the
+//! other, a step started `1.6e-8` from the wall, the certified answer was
+//! "possible contact from the start" (time `0`, undecided below that
+//! distance), rapier ignored it, and the cone ended the step in the wall
+//! (late), then passed through. Our answers were never later than the
+//! sampled truth (parry's were, by up to 0.016 s, in the same launch).
+//!
 //! After the world lines: the dispatcher's counts per world (casts answered
 //! by the certified cast, casts handed to parry's), and the cost of
 //! installing the dispatcher with no shape wrapped (the same launches,
-//! without the checker): rapier then calls it only for cylinders, cones and
-//! half-spaces, so in the other worlds it only forwards queries to parry's.
+//! without the checker, five alternating rounds, the fastest of each):
+//! rapier then calls its `cast_shapes_nonlinear` only for cylinders, cones
+//! and half-spaces, so in the other worlds it only forwards queries to
+//! parry's. The `ms per step` of the world lines are measured in the
+//! checked runs (the checker runs between steps).
+//!
+//! That cost is not nil in the `mesh` world: 15 to 25 % more per step on an
+//! AMD EPYC (with fat LTO too), where the steps are spent in parry's
+//! triangle-cuboid contact manifolds. Profiled, the same parry code runs
+//! either way, but compiled differently: parry's generic manifold code is
+//! instantiated for this dispatcher in the calling crate instead of in
+//! rapier, and there a cuboid's `support_point_toward` is not inlined into
+//! its separating-axis search. In the worlds of primitives it is within the
+//! noise.
 
 use std::time::Instant;
 
@@ -649,22 +675,32 @@ fn main() {
         );
     }
     // The cost of installing the dispatcher with nothing wrapped: the same
-    // launches, unchecked, default and installed alternated per world.
+    // launches, unchecked, default and installed alternated, five rounds;
+    // the fastest round of each (the least disturbed by the machine).
+    const ROUNDS: usize = 5;
     let (mut d_secs, mut i_secs, mut n) = (0.0, 0.0, 0);
     for &world in &worlds {
-        let d = run_world(world, Mode::Default, launches, steps, false, false);
-        let i = run_world(world, Mode::Installed, launches, steps, false, false);
+        let (mut d_best, mut i_best) = (f64::INFINITY, f64::INFINITY);
+        let mut casts = 0;
+        let mut world_steps = 0;
+        for _ in 0..ROUNDS {
+            let d = run_world(world, Mode::Default, launches, steps, false, false);
+            let i = run_world(world, Mode::Installed, launches, steps, false, false);
+            d_best = d_best.min(d.step_secs);
+            i_best = i_best.min(i.step_secs);
+            casts = i.stats.certified;
+            world_steps = d.steps;
+        }
         println!(
             "installed, nothing wrapped, {}: ms per step default {:.4} installed {:.4} \
-             (certified casts {})",
+             (certified casts {casts})",
             world.name(),
-            d.ms_per_step(),
-            i.ms_per_step(),
-            i.stats.certified,
+            1e3 * d_best / world_steps.max(1) as f64,
+            1e3 * i_best / world_steps.max(1) as f64,
         );
-        d_secs += d.step_secs;
-        i_secs += i.step_secs;
-        n += d.steps;
+        d_secs += d_best;
+        i_secs += i_best;
+        n += world_steps;
     }
     println!(
         "installed, nothing wrapped, all worlds: ms per step default {:.4} installed {:.4}",
