@@ -126,3 +126,52 @@ fn the_fast_mesh_world_does_not_tunnel_with_ours() {
     assert!(t.stats.certified > 0, "the certified cast answered: {t:?}");
     assert_eq!(t.stats.handed_to_parry, 0, "nothing handed to parry: {t:?}");
 }
+
+#[test]
+fn shapes_close_but_apart_at_the_start_are_cast_past_it() {
+    use parry3d_f64::math::Pose;
+    use parry3d_f64::query::NonlinearRigidMotion;
+    // A ball 5e-5 from a wall (within the default contact distance, 1e-4)
+    // closing at 1: it touches at 5e-5. Rapier ignores a hit at fraction 0,
+    // so the answer must be after the start, and never after the contact.
+    let ball = SharedShape::ball(0.5);
+    let wall = SharedShape::cuboid(0.5, 4.0, 4.0);
+    let gap = 5e-5;
+    let m1 = NonlinearRigidMotion::new(Pose::IDENTITY, Vector::ZERO, Vector::X, Vector::ZERO);
+    let m2 = NonlinearRigidMotion::constant_position(Pose::from_translation(Vector::new(
+        1.0 + gap,
+        0.0,
+        0.0,
+    )));
+    let hit = motion_bound_parry::cast_shapes_nonlinear(
+        &m1,
+        ball.as_ref(),
+        &m2,
+        wall.as_ref(),
+        0.0,
+        1.0 / 60.0,
+        false,
+    )
+    .expect("a supported pair")
+    .expect("a contact");
+    assert!(
+        hit.time_of_impact > 0.0 && hit.time_of_impact <= gap,
+        "the contact at {gap} answered at {}",
+        hit.time_of_impact
+    );
+    // Touching at the start: the hit at the start.
+    let touching =
+        NonlinearRigidMotion::constant_position(Pose::from_translation(Vector::new(1.0, 0.0, 0.0)));
+    let hit = motion_bound_parry::cast_shapes_nonlinear(
+        &m1,
+        ball.as_ref(),
+        &touching,
+        wall.as_ref(),
+        0.0,
+        1.0 / 60.0,
+        false,
+    )
+    .expect("a supported pair")
+    .expect("a contact");
+    assert_eq!(hit.time_of_impact, 0.0, "touching at the start");
+}
