@@ -14,7 +14,10 @@
 //!   shapes;
 //! - **ours**: the narrow phase with [`CertifiedDispatcher`], every dynamic
 //!   collider's shape wrapped in [`Swept`] (fixed ones plain), so that
-//!   rapier hands all CCD pairs of the dynamic bodies to the certified cast.
+//!   rapier hands all CCD pairs of the dynamic bodies to the certified cast,
+//!   and [`CertifiedPass`] after each step (the bodies' actual motions over
+//!   the step, cast pairwise, moved back to the earliest time of impact;
+//!   its time is counted in the step's).
 //!
 //! The worlds:
 //!
@@ -49,37 +52,30 @@
 //! A world's line counts launches with at least one such step, out of
 //! `--launches`, and the mean wall-clock time of `step()`.
 //!
-//! # What "ours" can and cannot fix
+//! # What the dispatcher alone cannot fix, and the pass does
 //!
 //! The certified cast answers the question rapier asks: when, along the
 //! step's motion, two shapes first touch, never later than they do and
-//! never "no impact" when there is one. It can fix a tunnel that comes from
-//! rapier not asking (a moving triangle mesh, which rapier never sweeps:
-//! the `mesh` world) or from a cast answering too late or not at all.
-//! It cannot fix:
+//! never "no impact" when there is one. Given to rapier's CCD (through the
+//! dispatcher and [`Swept`]), it fixes what comes from rapier not asking
+//! (a moving triangle mesh, which rapier never sweeps: the `mesh` world) or
+//! from a cast answering too late. It cannot fix what rapier never asks
+//! (it casts nothing between two bullets: the `bullets` world) nor what
+//! rapier does with the answer: it ignores a hit at fraction `0` and clamps
+//! a body along its own interpolation, not the motion it cast. Traced in
+//! the `cylinder` world with the dispatcher alone: our hit left a gap of
+//! `8e-5` along the asked motion, rapier's clamped pose (along its own
+//! path) was touching, the next step's cast answered `0`, rapier ignored it
+//! and a cone spinning at 40 rad/s passed through the wall; the `board`
+//! world was late the same way. With the dispatcher alone (no pass), one
+//! run of 40 launches: board late 4, bullets tunnelled 25, cylinder
+//! tunnelled 2 and late 9; plate and mesh 0.
 //!
-//! - what rapier never asks: it casts nothing between two bullets (two
-//!   CCD-enabled dynamic bodies), so the `bullets` world tunnels the same
-//!   with any dispatcher;
-//! - what rapier does with the answer: it ignores a hit at fraction `0`
-//!   (shapes already touching at the start of the sub-step), and it clamps
-//!   a body along its own interpolation of the motion, which is not the
-//!   motion the cast was asked about; a body can end such a step in the
-//!   other, deeper than `TOL` ("late"). That lateness is the engine's.
-//!
-//! Both are seen in the `cylinder` world, where rapier already hands the
-//! casts to the dispatcher (default: parry's cast; ours: the certified one),
-//! and where ours can tunnel in a launch or two as the default does. Two
-//! such launches, traced cast by cast (the asked motion, our answer,
-//! parry's, and a sampled truth): in one, our hit left a gap of `8e-5`
-//! along the asked motion, rapier's clamped pose (along its own path) was
-//! touching, the next step's cast (touching at its start) answered `0`,
-//! rapier ignored it and the spinning cone passed through the wall; in the
-//! other, a step started `1.6e-8` from the wall, the certified answer was
-//! "possible contact from the start" (time `0`, undecided below that
-//! distance), rapier ignored it, and the cone ended the step in the wall
-//! (late), then passed through. Our answers were never later than the
-//! sampled truth (parry's were, by up to 0.016 s, in the same launch).
+//! [`CertifiedPass`] closes these: it casts the motions the bodies actually
+//! made (the ones the checker interpolates), every CCD body against every
+//! collider its swept box meets, and moves each back to its pose on that
+//! motion at the earliest time of impact; a pair touching at the start that
+//! the step would leave deeper is held at the start.
 //!
 //! After the world lines: the dispatcher's counts per world (casts answered
 //! by the certified cast, casts handed to parry's), and the cost of
@@ -101,6 +97,7 @@
 
 use std::time::Instant;
 
+use motion_bound_parry::rapier::CertifiedPass;
 use motion_bound_parry::{CertifiedDispatcher, DispatchStats, Swept};
 use parry3d_f64::math::{Pose, Rotation, Vector};
 use parry3d_f64::query;
@@ -512,8 +509,12 @@ pub(crate) struct Tally {
     pub(crate) tunnelled: usize,
     /// Launches with a late step.
     pub(crate) late: usize,
-    /// Seconds spent in `step()`.
+    /// Seconds spent in `step()` (and, for `Ours`, in the certified pass).
     pub(crate) step_secs: f64,
+    /// The certified pass's casts and bodies moved back (`Ours`).
+    pub(crate) pass_casts: usize,
+    /// Bodies the certified pass moved back to a time of impact.
+    pub(crate) pass_clamped: usize,
     /// The dispatcher's counts (`Installed` and `Ours`).
     pub(crate) stats: DispatchStats,
 }
@@ -573,6 +574,7 @@ pub(crate) fn run_world(
     verbose: bool,
 ) -> Tally {
     let dispatcher = CertifiedDispatcher::new();
+    let mut pass = CertifiedPass::new().with_cache(dispatcher.cache().clone());
     let mut t = Tally::default();
     for seed in 0..launches {
         let specs = build(world, seed);
@@ -582,7 +584,15 @@ pub(crate) fn run_world(
         for step in 0..steps {
             let before: Vec<Pose> = hs.iter().map(|h| *w.bodies[*h].position()).collect();
             let t0 = Instant::now();
+            if mode == Mode::Ours {
+                pass.record(&w.bodies);
+            }
             w.step();
+            if mode == Mode::Ours {
+                let c = pass.clamp(&mut w.bodies, &w.colliders, DT);
+                t.pass_casts += c.casts;
+                t.pass_clamped += c.bodies;
+            }
             t.step_secs += t0.elapsed().as_secs_f64();
             t.steps += 1;
             if !check {
@@ -664,11 +674,12 @@ fn main() {
             d.ms_per_step(),
             o.ms_per_step(),
         );
-        stats.push((world, o.stats));
+        stats.push((world, o.stats, o.pass_casts, o.pass_clamped));
     }
-    for (world, s) in stats {
+    for (world, s, casts, clamped) in stats {
         println!(
-            "stats {}: certified casts {}, handed to parry {}",
+            "stats {}: dispatcher certified casts {}, handed to parry {}; \
+             pass casts {casts}, bodies moved back {clamped}",
             world.name(),
             s.certified,
             s.handed_to_parry

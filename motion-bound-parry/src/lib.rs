@@ -12,11 +12,16 @@
 //! - [`ShapeCache`]: shapes converted once (a mesh's tree built once per
 //!   shared shape), and the same cast through them.
 //! - [`CertifiedDispatcher`]: a query dispatcher for rapier's narrow phase
-//!   whose `cast_shapes_nonlinear` is the certified one.
+//!   whose `cast_shapes_nonlinear` is the certified one, and [`Swept`], a
+//!   collider shape wrapper with which rapier hands every CCD pair of that
+//!   collider to it (rapier's own proxy sweeps take the rest otherwise).
+//! - `rapier::CertifiedPass` (feature `rapier`): a certified pass after
+//!   rapier's step over the bodies' actual motions, for what rapier's CCD
+//!   never asks (two bullets) or does with a time (its own clamping path).
 //!
 //! `f64` (the default feature, `parry3d-f64`) is re-exported at the root;
-//! `f32` (`parry3d`) is the module [`f32`](crate::f32) (re-exported at the
-//! root when `f64` is off).
+//! `f32` (`parry3d`) is the module `f32` (re-exported at the root when
+//! `f64` is off).
 #![forbid(unsafe_code)]
 #![cfg_attr(docsrs, feature(doc_cfg))]
 

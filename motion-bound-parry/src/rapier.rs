@@ -1,26 +1,35 @@
-//! A certified pass for the pairs rapier's CCD never casts: two bullets.
+//! A certified pass after rapier's step: every CCD body's actual motion
+//! over the step, cast against everything it may meet.
 //!
-//! Rapier 0.36 sweeps a bullet (a dynamic body with CCD enabled) against
-//! every body except another bullet, and takes each target at its end-of-step
-//! pose; two fast bullets flying at each other are cast against nothing and
-//! pass through each other (dimforge/rapier#984). [`BulletPairs`] runs after
-//! `PhysicsPipeline::step`: it takes each bullet's motion over the step from
-//! its poses before and after (its centre of mass on a straight line, its
-//! rotation at a constant rate about it: the motion rapier's own sweeps
-//! interpolate), casts every pair of bullets whose swept boxes meet with the
-//! certified cast (both bodies moving, as they did), and moves each body that
-//! would touch another back to its pose at the earliest certified time of
-//! impact of its group (the bullets linked by hits), as rapier's CCD does
-//! with the pairs it casts. Velocities are kept: the next step's contact
-//! solver resolves the contact.
+//! Rapier 0.36's CCD leaves gaps a dispatcher cannot close: it sweeps a
+//! bullet (a dynamic body with CCD enabled) against every body except
+//! another bullet, so two fast bullets flying at each other pass through
+//! each other (dimforge/rapier#984); it takes each target at its end-of-step
+//! pose; it ignores a hit at the start of a sub-step; and it clamps a body
+//! along its own interpolation of the motion, not the motion it cast.
+//! [`CertifiedPass`] runs after `PhysicsPipeline::step`: it takes every
+//! body's motion over the step from its poses before and after (its centre
+//! of mass on a straight line, its rotation at a constant rate about it),
+//! casts each CCD body's colliders against every other collider whose swept
+//! box meets theirs with the certified cast (both moving, as they did), and
+//! moves the dynamic bodies of each group linked by hits back to the pose,
+//! on that very motion, at the group's earliest certified time of impact.
+//! Velocities are kept: the next step's contact solver resolves the
+//! contact. A pair touching at the start is a resting contact, left to the
+//! solver as rapier leaves it, unless the step would end it deeper than it
+//! began (parry's static penetration depth at both ends, by more than the
+//! contact distance): then its bodies are held at their start poses.
 //!
 //! What it does not do: bodies stopped at different times (two groups, or
-//! a group and a bullet it never met) are each where their own motion put
+//! a group and a body it never met) are each where their own motion put
 //! them; a body stopped early may stand where another passes later in the
-//! step. Rapier's own clamping has the same limit; substeps remove it.
+//! step (rapier's own clamping has the same limit; substeps remove it). Its
+//! cost is one cast per pair of colliders whose swept boxes meet, found by
+//! a scan of every collider per CCD body: for a few fast bodies, not for
+//! thousands.
 //!
 //! ```
-//! use motion_bound_parry::rapier::BulletPairs;
+//! use motion_bound_parry::rapier::CertifiedPass;
 //! use rapier3d_f64::prelude::*;
 //! let mut world = PhysicsWorld::default();
 //! world.gravity = Vector::ZERO;
@@ -33,7 +42,7 @@
 //!         .ccd_enabled(true);
 //!     world.insert(rb, ColliderBuilder::ball(0.1));
 //! }
-//! let mut pass = BulletPairs::new();
+//! let mut pass = CertifiedPass::new();
 //! pass.record(&world.bodies);
 //! world.step();
 //! let clamped = pass.clamp(&mut world.bodies, &world.colliders, world.integration_parameters.dt);
@@ -54,7 +63,7 @@ use rapier3d_f64::parry::query::NonlinearRigidMotion;
 
 use crate::f64::ShapeCache;
 
-/// What one [`BulletPairs::clamp`] did.
+/// What one [`CertifiedPass::clamp`] did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct ClampStats {
@@ -62,26 +71,44 @@ pub struct ClampStats {
     pub casts: usize,
     /// Bodies moved back to a time of impact.
     pub bodies: usize,
+    /// Pairs touching at the start that the step would have left deeper:
+    /// their bodies held at the start.
+    pub held: usize,
     /// Casts the adapter could not answer (an unsupported shape or input):
     /// those pairs are left to rapier.
     pub unanswered: usize,
 }
 
-/// The certified pass over pairs of bullets (see the module docs).
+/// The certified pass (see the module docs).
 #[derive(Debug)]
-pub struct BulletPairs {
+pub struct CertifiedPass {
     cache: Arc<ShapeCache>,
     params: CaParams<f64>,
-    before: Vec<(RigidBodyHandle, Pose)>,
+    /// Every body's pose before the step, and whether it is swept (a
+    /// dynamic body with CCD enabled).
+    before: Vec<(RigidBodyHandle, Pose, bool)>,
 }
 
-impl Default for BulletPairs {
+impl Default for CertifiedPass {
     fn default() -> Self {
         Self::new()
     }
 }
 
-impl BulletPairs {
+/// A collider's motion over the step: its body's (about the body's centre
+/// of mass, from its poses before and after) composed with its pose on the
+/// body, or its own still pose for a collider without a body.
+fn collider_motion(
+    body: Option<&NonlinearRigidMotion>,
+    c: &rapier3d_f64::geometry::Collider,
+) -> NonlinearRigidMotion {
+    match body {
+        Some(m) => c.position_wrt_parent().map_or(*m, |p| m.prepend(*p)),
+        None => NonlinearRigidMotion::constant_position(*c.position()),
+    }
+}
+
+impl CertifiedPass {
     /// With a new cache and [`CaParams::default`].
     #[must_use]
     pub fn new() -> Self {
@@ -107,20 +134,20 @@ impl BulletPairs {
         self
     }
 
-    /// Before `PhysicsPipeline::step`: records every bullet's pose.
+    /// Before `PhysicsPipeline::step`: records every body's pose.
     pub fn record(&mut self, bodies: &RigidBodySet) {
         self.before.clear();
         self.before.extend(
             bodies
                 .iter()
-                .filter(|(_, b)| b.is_dynamic() && b.is_ccd_enabled())
-                .map(|(h, b)| (h, *b.position())),
+                .map(|(h, b)| (h, *b.position(), b.is_dynamic() && b.is_ccd_enabled())),
         );
     }
 
-    /// After `PhysicsPipeline::step` of length `dt`: casts the recorded
-    /// bullets pairwise over the step and moves each that would touch
-    /// another back to its earliest certified time of impact.
+    /// After `PhysicsPipeline::step` of length `dt`: casts every swept
+    /// body's colliders against every other collider (both moving as they
+    /// did over the step) and moves the dynamic bodies of each group that
+    /// would touch back to the group's earliest certified time of impact.
     pub fn clamp(
         &mut self,
         bodies: &mut RigidBodySet,
@@ -131,11 +158,11 @@ impl BulletPairs {
         if dt <= 0.0 {
             return stats;
         }
-        // Each bullet's motion over the step, about its centre of mass.
+        // Each body's motion over the step, about its centre of mass.
         let motions: Vec<Option<NonlinearRigidMotion>> = self
             .before
             .iter()
-            .map(|(h, start)| {
+            .map(|(h, start, _)| {
                 let b = bodies.get(*h)?;
                 let end = b.position();
                 let com = b.local_center_of_mass();
@@ -145,62 +172,89 @@ impl BulletPairs {
                 Some(NonlinearRigidMotion::new(*start, com, linvel, angvel))
             })
             .collect();
-        let mut hits: Vec<(usize, usize, f64)> = Vec::new();
-        for i in 0..self.before.len() {
-            for j in i + 1..self.before.len() {
-                let (Some(mi), Some(mj)) = (&motions[i], &motions[j]) else {
+        let index: std::collections::HashMap<RigidBodyHandle, usize> = self
+            .before
+            .iter()
+            .enumerate()
+            .map(|(k, (h, _, _))| (*h, k))
+            .collect();
+        // The swept box of a collider's motion: its start and end boxes
+        // merged, grown by how far the rotation can carry a point off the
+        // segment between them (`|w| dt` times its reach, at most twice the
+        // reach), and by the contact distance.
+        let swept = |m: &NonlinearRigidMotion, s: &dyn parry3d_f64::shape::Shape| {
+            let r = s.compute_local_bounding_sphere();
+            let reach = r.center.length() + r.radius + m.local_center.length();
+            let a = s.compute_aabb(&m.position_at_time(0.0));
+            let b = s.compute_aabb(&m.position_at_time(dt));
+            let grow = (m.angvel.length() * dt).min(2.0) * reach;
+            a.merged(&b).loosened(grow + self.params.contact_distance)
+        };
+        let mut hits: Vec<(usize, Option<usize>, f64)> = Vec::new();
+        for (i, (hi, _, swept_i)) in self.before.iter().enumerate() {
+            let (true, Some(mi), Some(bi)) = (*swept_i, &motions[i], bodies.get(*hi)) else {
+                continue;
+            };
+            for ci in bi.colliders() {
+                let Some(ci) = colliders.get(*ci) else {
                     continue;
                 };
-                let (Some(bi), Some(bj)) =
-                    (bodies.get(self.before[i].0), bodies.get(self.before[j].0))
-                else {
-                    continue;
-                };
-                for ci in bi.colliders() {
-                    for cj in bj.colliders() {
-                        let (Some(ci), Some(cj)) = (colliders.get(*ci), colliders.get(*cj)) else {
-                            continue;
-                        };
-                        let at =
-                            |m: &NonlinearRigidMotion, c: &rapier3d_f64::geometry::Collider| {
-                                c.position_wrt_parent().map_or(*m, |p| m.prepend(*p))
-                            };
-                        let (m1, m2) = (at(mi, ci), at(mj, cj));
-                        // The swept boxes: start and end boxes merged, grown
-                        // by how far the rotation can carry a point off
-                        // the segment between them (|w| dt times the reach,
-                        // at most twice the reach).
-                        let swept =
-                            |m: &NonlinearRigidMotion, s: &dyn parry3d_f64::shape::Shape| {
-                                let r = s.compute_local_bounding_sphere();
-                                let reach = r.center.length() + r.radius + m.local_center.length();
-                                let a = s.compute_aabb(&m.position_at_time(0.0));
-                                let b = s.compute_aabb(&m.position_at_time(dt));
-                                let grow = (m.angvel.length() * dt).min(2.0) * reach;
-                                a.merged(&b).loosened(grow + self.params.contact_distance)
-                            };
-                        if !swept(&m1, ci.shape()).intersects(&swept(&m2, cj.shape())) {
-                            continue;
+                let m1 = collider_motion(Some(mi), ci);
+                let box1 = swept(&m1, ci.shape());
+                for (_, cj) in colliders.iter() {
+                    // Another body's collider (a swept one once per pair),
+                    // or a collider without a body.
+                    let j = match cj.parent() {
+                        Some(hj) if hj == *hi => continue,
+                        Some(hj) => match index.get(&hj) {
+                            Some(&j) if self.before[j].2 && j < i => continue,
+                            Some(&j) => Some(j),
+                            None => continue,
+                        },
+                        None => None,
+                    };
+                    let m2 = collider_motion(j.and_then(|j| motions[j].as_ref()), cj);
+                    if !box1.intersects(&swept(&m2, cj.shape())) {
+                        continue;
+                    }
+                    stats.casts += 1;
+                    match self.cache.cast_shapes_nonlinear(
+                        &m1,
+                        ci.shape(),
+                        &m2,
+                        cj.shape(),
+                        0.0,
+                        dt,
+                        true,
+                        &self.params,
+                    ) {
+                        Ok(Some(hit)) if hit.time_of_impact > 0.0 => {
+                            hits.push((i, j, hit.time_of_impact));
                         }
-                        stats.casts += 1;
-                        match self.cache.cast_shapes_nonlinear(
-                            &m1,
-                            ci.shape(),
-                            &m2,
-                            cj.shape(),
-                            0.0,
-                            dt,
-                            true,
-                            &self.params,
-                        ) {
-                            // A hit at the start is a resting contact: the
-                            // solver's, as rapier leaves it.
-                            Ok(Some(hit)) if hit.time_of_impact > 0.0 => {
-                                hits.push((i, j, hit.time_of_impact));
+                        // Touching at the start: a resting contact, the
+                        // solver's, unless the step would end it deeper
+                        // than it began (by more than the contact
+                        // distance): then the body is held at its start.
+                        Ok(Some(_)) => {
+                            let depth = |t: f64| {
+                                parry3d_f64::query::contact(
+                                    &m1.position_at_time(t),
+                                    ci.shape(),
+                                    &m2.position_at_time(t),
+                                    cj.shape(),
+                                    0.0,
+                                )
+                                .ok()
+                                .flatten()
+                                .map_or(0.0, |c| (-c.dist).max(0.0))
+                            };
+                            if depth(dt) > depth(0.0) + self.params.contact_distance {
+                                stats.held += 1;
+                                hits.push((i, j, 0.0));
                             }
-                            Ok(_) => {}
-                            Err(_) => stats.unanswered += 1,
                         }
+                        Ok(_) => {}
+                        Err(_) => stats.unanswered += 1,
                     }
                 }
             }
@@ -218,21 +272,24 @@ impl BulletPairs {
             k
         }
         for &(i, j, _) in &hits {
-            let (ri, rj) = (root(&mut group, i), root(&mut group, j));
-            group[ri] = rj;
+            if let Some(j) = j {
+                let (ri, rj) = (root(&mut group, i), root(&mut group, j));
+                group[ri] = rj;
+            }
         }
         let mut first = vec![f64::INFINITY; self.before.len()];
         for &(i, _, t) in &hits {
             let r = root(&mut group, i);
             first[r] = first[r].min(t);
         }
-        let earliest: Vec<f64> = (0..self.before.len())
-            .map(|k| first[root(&mut group, k)])
-            .collect();
-        for (k, t) in earliest.iter().enumerate() {
-            if let (true, Some(m)) = (t.is_finite(), &motions[k]) {
-                if let Some(b) = bodies.get_mut(self.before[k].0) {
-                    b.set_position(m.position_at_time(*t), true);
+        for k in 0..self.before.len() {
+            let t = first[root(&mut group, k)];
+            let (true, Some(m)) = (t.is_finite(), &motions[k]) else {
+                continue;
+            };
+            if let Some(b) = bodies.get_mut(self.before[k].0) {
+                if b.is_dynamic() {
+                    b.set_position(m.position_at_time(t), true);
                     stats.bodies += 1;
                 }
             }

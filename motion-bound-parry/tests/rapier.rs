@@ -123,8 +123,20 @@ fn the_fast_mesh_world_does_not_tunnel_with_ours() {
     assert!(d.tunnelled > 0, "rapier's default tunnels here: {d:?}");
     let t = run_world(World::Mesh, Mode::Ours, 6, 60, true, false);
     assert_eq!(t.tunnelled, 0, "tunnelled launches with ours: {t:?}");
+    assert_eq!(t.late, 0, "late launches with ours: {t:?}");
     assert!(t.stats.certified > 0, "the certified cast answered: {t:?}");
     assert_eq!(t.stats.handed_to_parry, 0, "nothing handed to parry: {t:?}");
+}
+
+#[test]
+fn two_bullets_do_not_pass_through_each_other_with_the_certified_pass() {
+    // Rapier casts nothing between two bullets; the pass casts their
+    // actual motions.
+    let d = run_world(World::Bullets, Mode::Default, 6, 40, true, false);
+    assert!(d.tunnelled > 0, "rapier's default tunnels here: {d:?}");
+    let t = run_world(World::Bullets, Mode::Ours, 6, 40, true, false);
+    assert_eq!((t.tunnelled, t.late), (0, 0), "with ours: {t:?}");
+    assert!(t.pass_clamped > 0, "the pass moved bodies back: {t:?}");
 }
 
 #[test]
