@@ -776,6 +776,16 @@ fn cast_bodies(
     let report = b1.with_shape(|s1| {
         b2.with_shape(|s2| {
             let mut pair = AnyPair::try_new(s1, s2)?.with_workspace(ws.take().unwrap_or_default());
+            // The contact distance grown by twice the displacements the
+            // conversion's rounding may cause (`proofs/12-shapes.md`,
+            // "Parry's shapes and motions"), so that the clearance still
+            // covers them.
+            let slack = rounding_slack(
+                (motion1_w, reach_of(&s1)),
+                (motion2_w, reach_of(&s2)),
+                start_time.abs().max(end_time.abs()),
+            );
+            let params = &params.with_contact_distance(params.contact_distance + slack);
             let mut r = time_of_impact(&mut pair, &m1, &m2, params);
             // Within the contact distance at the start but apart: asked
             // again with a contact distance below the gap, so that a
@@ -790,7 +800,7 @@ fn cast_bodies(
                     }) => c.witness.map_or(0.0, |w| w.distance),
                     _ => break,
                 };
-                p.contact_distance = gap / 4.0;
+                p.contact_distance = gap / 4.0 + slack;
                 if gap <= 0.0 || p.validate().is_err() {
                     break;
                 }
@@ -807,6 +817,38 @@ fn cast_bodies(
         Ok(Err(e)) | Err(e) => return (Err(e), ws),
     };
     (Ok(hit(&report.outcome, motion1, motion2, start_time)), ws)
+}
+
+/// An upper bound of the distance from its body origin of any point of a
+/// shape (`0` for a half-space, whose plane passes through it).
+fn reach_of(s: &Ours<'_, Real>) -> Real {
+    match s {
+        Ours::Convex(c) => c.reach(),
+        Ours::Mesh(t) => t.root_ball().centre_norm_up() + t.root_ball().radius(),
+        Ours::Compound(c) => c.reach(),
+        _ => 0.0,
+    }
+}
+
+/// Twice how far the conversion's rounding may move a point of either
+/// body relative to the other (`proofs/12-shapes.md`, "Parry's shapes and
+/// motions"): each rotation centre `c = Q l + T` is computed in floating
+/// point, off by at most `8 u (|l| + |T|)`; a half-space turned into the
+/// world's axes has a rounded normal, off by at most `8 u` times the
+/// distance from its origin of the points that matter (the other body's, at
+/// any time of the interval: within the sum of both translations, local
+/// centres, reaches and travels). `16 u` times that sum covers both, with
+/// a margin for the norms' own rounding; doubled for the clearance.
+fn rounding_slack(
+    (m1, reach1): (&NonlinearRigidMotion, Real),
+    (m2, reach2): (&NonlinearRigidMotion, Real),
+    time: Real,
+) -> Real {
+    let u = Real::EPSILON / 2.0;
+    let extent = |m: &NonlinearRigidMotion, reach: Real| {
+        m.start.translation.length() + m.local_center.length() + reach + m.linvel.length() * time
+    };
+    2.0 * 16.0 * u * (extent(m1, reach1) + extent(m2, reach2))
 }
 
 /// A half-space body whose motion has a start orientation and no angular
