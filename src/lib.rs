@@ -185,6 +185,9 @@ mod bound;
 #[cfg(feature = "alloc")]
 mod bvh;
 pub mod ca;
+#[cfg(feature = "alloc")]
+#[cfg_attr(docsrs, doc(cfg(feature = "alloc")))]
+pub mod chain;
 mod error;
 mod features;
 mod float;

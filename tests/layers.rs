@@ -27,7 +27,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
 use std::path::{Path, PathBuf};
 
-const LAYERS: [(&str, u32); 18] = [
+const LAYERS: [(&str, u32); 19] = [
     ("float", 0),
     ("error", 0),
     ("rounding", 0),
@@ -40,6 +40,7 @@ const LAYERS: [(&str, u32); 18] = [
     ("bvh", 7),
     ("ca", 8),
     ("scene", 9),
+    ("chain", 9),
     ("scenes", 9),
     ("reference", 9),
     ("testkit", 9),

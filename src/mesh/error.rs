@@ -47,6 +47,28 @@ pub enum MeshError {
     /// An OBJ file could not be read.
     #[cfg(feature = "obj")]
     Obj(crate::mesh::obj::ObjError),
+    /// Input to the STL reader that is neither ASCII STL (it does not begin
+    /// with `solid`) nor a binary STL of the `84 + 50 n` bytes that the
+    /// triangle count `n` in its header announces: a truncated file, or
+    /// bytes after the last facet.
+    StlLength {
+        /// The input's length in bytes.
+        len: usize,
+        /// The header's triangle count, `None` for input shorter than the
+        /// 84-byte header.
+        triangles: Option<u32>,
+    },
+    /// ASCII STL text with an unexpected token, or that ends early.
+    StlSyntax {
+        /// The 1-based line number of the token (of the last token, for an
+        /// early end).
+        line: usize,
+        /// What the reader expected there (`"a number"`, `` "`vertex`" ``, ...).
+        expected: &'static str,
+    },
+    /// A mesh file could not be read: the [`std::io::Error`]'s kind.
+    #[cfg(feature = "std")]
+    Io(std::io::ErrorKind),
 }
 
 /// Where and why an OFF file could not be read.
@@ -110,6 +132,24 @@ impl fmt::Display for MeshError {
             Self::Off(e) => write!(f, "{e}"),
             #[cfg(feature = "obj")]
             Self::Obj(e) => write!(f, "{e}"),
+            Self::StlLength {
+                len,
+                triangles: None,
+            } => write!(
+                f,
+                "STL: {len} bytes, not ASCII and shorter than a binary file's 84-byte header"
+            ),
+            Self::StlLength {
+                len,
+                triangles: Some(n),
+            } => write!(
+                f,
+                "STL: {len} bytes, not ASCII and not the {} bytes of a binary file of {n} facets, as its header says",
+                84 + 50 * u64::from(*n)
+            ),
+            Self::StlSyntax { line, expected } => write!(f, "STL line {line}: expected {expected}"),
+            #[cfg(feature = "std")]
+            Self::Io(kind) => write!(f, "cannot read the mesh file: {kind}"),
         }
     }
 }
