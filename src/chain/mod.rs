@@ -36,7 +36,7 @@
 //!
 //! ```
 //! use motion_bound::chain::{ChainBuilder, ChainScene, JointKind, JointSpec, Obstacle, SegmentOutcome};
-//! use motion_bound::{BallTree, Pose, TriMesh, Vec3};
+//! use motion_bound::{Pose, TriMesh, Vec3};
 //! // A one-link arm: a thin bar 1 long along x, turning about z.
 //! let bar = TriMesh::try_new(
 //!     vec![[0.0, -0.02, -0.02], [1.0, 0.0, 0.0], [0.0, 0.02, -0.02], [0.0, 0.0, 0.02]],
@@ -61,7 +61,7 @@
 //!     vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
 //! )?;
 //! let at = Pose::from_translation(Vec3::new(0.495, 0.495, 0.0));
-//! scene.add_obstacle(Obstacle::try_new("pole", BallTree::try_from_mesh(&pole)?, at)?);
+//! scene.add_obstacle(Obstacle::try_new("pole", pole, at)?);
 //! // Sweeping from 0 to 1.5 rad hits it near 0.785 rad (t near 0.52);
 //! // discrete checks 0.1 rad apart would step over the 0.01-wide pole.
 //! let report = scene.check_segment(&[0.0], &[1.5])?;

@@ -307,9 +307,9 @@ impl<T: Float> ChainBuilder<T> {
                 at = joints[j].spec.parent;
             }
             path.reverse();
-            let tree = match mesh {
+            let tree = match &mesh {
                 Some(mesh) => Some(
-                    BallTree::try_from_mesh(&mesh)
+                    BallTree::try_from_mesh(mesh)
                         .map_err(|e| ChainError::Mesh(alloc::format!("link {name:?}: {e}")))?,
                 ),
                 None => None,
@@ -319,6 +319,7 @@ impl<T: Float> ChainBuilder<T> {
                 .map_or(T::ZERO, |t: &BallTree<T>| t.whole.reach);
             links.push(LinkData {
                 name,
+                mesh,
                 tree,
                 parent_joint: parent_joint[l],
                 path,
@@ -351,6 +352,7 @@ pub(crate) struct JointData<T> {
 #[derive(Clone, Debug)]
 pub(crate) struct LinkData<T> {
     pub(crate) name: String,
+    pub(crate) mesh: Option<TriMesh<T>>,
     pub(crate) tree: Option<BallTree<T>>,
     pub(crate) parent_joint: Option<usize>,
     /// The movable joints from the root to the link, root first.
@@ -429,6 +431,31 @@ impl<T: Float> Chain<T> {
     #[must_use]
     pub fn link_tree(&self, link: usize) -> Option<&BallTree<T>> {
         self.links.get(link).and_then(|l| l.tree.as_ref())
+    }
+
+    /// A link's collision mesh in its frame, if it has one.
+    #[must_use]
+    pub fn link_mesh(&self, link: usize) -> Option<&TriMesh<T>> {
+        self.links.get(link).and_then(|l| l.mesh.as_ref())
+    }
+
+    /// Every joint as given (fixed ones included), in the order added; a
+    /// joint's normalised axis is [`joint_axis`](Self::joint_axis).
+    pub fn joints(&self) -> impl ExactSizeIterator<Item = &JointSpec<T>> + '_ {
+        self.joints.iter().map(|j| &j.spec)
+    }
+
+    /// Joint `j`'s unit axis in its frame (what the chain turns and slides
+    /// about; `+z` for a fixed joint).
+    #[must_use]
+    pub fn joint_axis(&self, j: usize) -> Option<Vec3<T>> {
+        self.joints.get(j).map(|j| j.axis)
+    }
+
+    /// Joint `j`'s coordinate index, for a movable joint.
+    #[must_use]
+    pub fn joint_coordinate(&self, j: usize) -> Option<usize> {
+        self.joints.get(j).and_then(|j| j.dof)
     }
 
     /// The link a link hangs from (`None` for the root).

@@ -11,13 +11,14 @@ use crate::chain::bound::{LinkErrors, LinkMotion};
 use crate::chain::model::{Chain, ChainError, JointFrame};
 use crate::geometry::closest::triangle_triangle_vec;
 use crate::rounding::{gamma, gap_down, step_down, sum_reaches};
-use crate::{BallTree, Float, Point3, Pose, Vec3};
+use crate::{BallTree, Float, Point3, Pose, TriMesh, Vec3};
 
 /// A still body of the chain's surroundings: a mesh (its ball tree) placed
 /// in the world.
 #[derive(Clone, Debug)]
 pub struct Obstacle<T> {
     name: String,
+    mesh: TriMesh<T>,
     tree: BallTree<T>,
     pose: Pose<T>,
     /// `|x| + reach`, the magnitude of every placed point.
@@ -27,14 +28,16 @@ pub struct Obstacle<T> {
 }
 
 impl<T: Float> Obstacle<T> {
-    /// An obstacle from its ball tree and world pose.
+    /// An obstacle from its mesh (in its own frame; its ball tree is built
+    /// here, once) and its world pose.
     ///
     /// # Errors
     /// [`ChainError::InvalidParameter`] for a pose that is not finite or
-    /// whose rotation has an entry beyond 2 (not a rotation).
+    /// whose rotation has an entry beyond 2 (not a rotation);
+    /// [`ChainError::Mesh`] for a mesh a ball tree cannot be built on.
     pub fn try_new(
         name: impl Into<String>,
-        tree: BallTree<T>,
+        mesh: TriMesh<T>,
         pose: Pose<T>,
     ) -> Result<Self, ChainError> {
         if !pose.is_finite()
@@ -43,10 +46,14 @@ impl<T: Float> Obstacle<T> {
         {
             return Err(ChainError::InvalidParameter("an obstacle's pose"));
         }
+        let name = name.into();
+        let tree = BallTree::try_from_mesh(&mesh)
+            .map_err(|e| ChainError::Mesh(alloc::format!("obstacle {name:?}: {e}")))?;
         let reach = (pose.translation.length() + tree.whole.reach) * (T::ONE + gamma::<T>(4));
         let delta = gamma::<T>(8) * reach + T::from_u32(4) * T::ETA_NORMAL;
         Ok(Self {
-            name: name.into(),
+            name,
+            mesh,
             tree,
             pose,
             reach: reach + delta,
@@ -58,6 +65,12 @@ impl<T: Float> Obstacle<T> {
     #[must_use]
     pub fn name(&self) -> &str {
         &self.name
+    }
+
+    /// Its mesh, in its own frame.
+    #[must_use]
+    pub fn mesh(&self) -> &TriMesh<T> {
+        &self.mesh
     }
 
     /// Its ball tree.
@@ -247,7 +260,7 @@ impl<T: Float> ChainParams<T> {
 ///
 /// ```
 /// use motion_bound::chain::{ChainBuilder, ChainScene, JointKind, JointSpec, Obstacle, SegmentOutcome};
-/// use motion_bound::{BallTree, Pose, TriMesh, Vec3};
+/// use motion_bound::{Pose, TriMesh, Vec3};
 /// // A bar 1 long along x, and a small block.
 /// let bar = TriMesh::try_new(
 ///     vec![[0.0, -0.02, -0.02], [1.0, 0.0, 0.0], [0.0, 0.02, -0.02], [0.0, 0.0, 0.02]],
@@ -273,7 +286,7 @@ impl<T: Float> ChainParams<T> {
 /// // The block 0.8 from the axis at 1.2 rad: the bar turning from 0 to 3 rad
 /// // reaches it a little before 1.2 rad (t = 0.4).
 /// let at = Pose::from_translation(Vec3::new(0.8 * 1.2f64.cos(), 0.8 * 1.2f64.sin(), -0.02));
-/// scene.add_obstacle(Obstacle::try_new("block", BallTree::try_from_mesh(&block)?, at)?);
+/// scene.add_obstacle(Obstacle::try_new("block", block, at)?);
 /// let report = scene.check_segment(&[0.0], &[3.0])?;
 /// match report.outcome {
 ///     SegmentOutcome::Contact(c) => assert!(c.time > 0.3 && c.time < 0.4, "{c:?}"),
@@ -498,6 +511,86 @@ impl<T: Float> ChainScene<T> {
             }
         }
         Ok(best)
+    }
+
+    /// Whether some checked pair's surfaces meet at configuration `q` (a
+    /// triangle pair at computed distance 0): the static check a discrete
+    /// motion validator runs at each sample. Stops at the first such pair.
+    ///
+    /// # Errors
+    /// [`ChainError::WrongDof`] and [`ChainError::NonFiniteCoordinate`].
+    pub fn collides_at(&self, q: &[T]) -> Result<bool, ChainError> {
+        Ok(self.touching_pairs(q, T::ZERO, true)?.first().is_some())
+    }
+
+    /// Never checks again the pairs of links whose surfaces are within
+    /// `distance` at configuration `q` (an SRDF's pairs "in collision by
+    /// default", such as fingers closed on each other), and returns them.
+    ///
+    /// # Errors
+    /// [`ChainError::WrongDof`], [`ChainError::NonFiniteCoordinate`] and
+    /// [`ChainError::InvalidParameter`] for a negative or non-finite distance.
+    pub fn allow_collisions_at(
+        &mut self,
+        q: &[T],
+        distance: T,
+    ) -> Result<Vec<(usize, usize)>, ChainError> {
+        if !(distance >= T::ZERO && distance.is_finite()) {
+            return Err(ChainError::InvalidParameter(
+                "distance must be non-negative and finite",
+            ));
+        }
+        let pairs: Vec<(usize, usize)> = self
+            .touching_pairs(q, distance, false)?
+            .into_iter()
+            .filter_map(|p| match p {
+                ChainPair::SelfCollision { a, b } => Some((a, b)),
+                ChainPair::Obstacle { .. } => None,
+            })
+            .collect();
+        for &(a, b) in &pairs {
+            self.allow_collision(a, b);
+        }
+        Ok(pairs)
+    }
+
+    /// The checked pairs with a triangle pair within `distance` at `q`
+    /// (computed distances); the first one only when `first`.
+    fn touching_pairs(
+        &self,
+        q: &[T],
+        distance: T,
+        first: bool,
+    ) -> Result<Vec<ChainPair>, ChainError> {
+        self.chain.check_q(q)?;
+        let mut work = Work::default();
+        work.errors.compute(&self.chain, q, q);
+        self.place(&mut work, q, q, T::ZERO);
+        work.rate = vec![T::ZERO; self.chain.dofs];
+        let mut out = Vec::new();
+        let mut stats = ChainStats::default();
+        for (pair, checked) in self.pairs() {
+            if !checked {
+                continue;
+            }
+            let Some((ta, tb)) = self.trees(pair) else {
+                continue;
+            };
+            self.fill_motions(&mut work, pair, T::ZERO);
+            let (Some(a), Some(b)) = (&work.a, &work.b) else {
+                continue;
+            };
+            // Node pairs whose certified gap exceeds the distance are not refined.
+            let cap = distance + T::ETA_NORMAL + T::TWO * (a.delta + b.delta);
+            let near = min_gap(ta, tb, a, b, cap, T::ZERO, &mut work.stack, &mut stats);
+            if near.closest.is_some_and(|(d, _, _)| d <= distance) {
+                out.push(pair);
+                if first {
+                    break;
+                }
+            }
+        }
+        Ok(out)
     }
 
     fn place(&self, work: &mut Work<T>, q0: &[T], q1: &[T], t: T) {
