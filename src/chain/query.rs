@@ -520,7 +520,7 @@ impl<T: Float> ChainScene<T> {
     /// # Errors
     /// [`ChainError::WrongDof`] and [`ChainError::NonFiniteCoordinate`].
     pub fn collides_at(&self, q: &[T]) -> Result<bool, ChainError> {
-        Ok(self.touching_pairs(q, T::ZERO, true)?.first().is_some())
+        Ok(!self.touching_pairs(q, T::ZERO, true)?.is_empty())
     }
 
     /// Never checks again the pairs of links whose surfaces are within
