@@ -52,6 +52,11 @@ pub mod scene {}
 #[doc = include_str!("../proofs/12-shapes.md")]
 pub mod shapes {}
 
+/// Kinematic chains: the chain bound, sub-intervals, rounding, and
+/// conservative advancement of link pairs.
+#[doc = include_str!("../proofs/13-chains.md")]
+pub mod chains {}
+
 /// Floating point: every bound is an upper bound for its float inputs.
 #[doc = include_str!("../proofs/floating-point.md")]
 pub mod floating_point {}

@@ -109,7 +109,15 @@ impl<T: Float> LinkMotion<T> {
                 continue;
             }
             if term.rotational {
-                let d0 = ((c - term.point).cross(term.axis).length() + rho + slack)
+                // `dist(c, axis)` from the computed centre, axis point and
+                // axis: each point is within `delta` of its exact place, and
+                // the axis direction within `axis_err`, which moves the
+                // distance by up to `axis_err |c - o|` (Lemma 13.3).
+                let lever = c - term.point;
+                let d0 = (lever.cross(term.axis).length()
+                    + rho
+                    + slack
+                    + self.axis_err * lever.length())
                     * (T::ONE + gamma::<T>(8));
                 let dmax = d0 + self.dt * v;
                 v += term.rate * dmax;
@@ -142,49 +150,75 @@ pub(crate) struct LinkErrors<T> {
 }
 
 impl<T: Float> LinkErrors<T> {
-    /// Lemma 13.3 for the segment `q0 -> q1`: for a link whose path from the
-    /// root has `m` joints, `epsilon_R = gamma_{64 (m + 1)} + sum over its
-    /// turning joints of gamma_3 (|q0_j| + |q1_j - q0_j|)` and
-    /// `delta = epsilon_R L + sum over its sliding joints of gamma_3 (|q0_j| + |q1_j - q0_j|)`,
-    /// `L = |x_base| + sum |o_j| + sum over sliding joints max(|q0_j|, |q1_j|) + reach`.
+    /// Lemma 13.3 for the segment `q0 -> q1`, every link, with each link's
+    /// points within its mesh's reach ([`link_errors`]).
     pub(crate) fn compute(&mut self, chain: &Chain<T>, q0: &[T], q1: &[T]) {
         let n = chain.links.len();
         self.delta.clear();
         self.axis.clear();
         self.reach.clear();
-        let base = chain.base.translation.length();
         for l in 0..n {
-            let mut depth = 0u32;
-            let mut q_rot = T::ZERO;
-            let mut q_slide = T::ZERO;
-            let mut slide_len = T::ZERO;
-            let mut at = l;
-            while let Some(j) = chain.links[at].parent_joint {
-                depth += 1;
-                let joint = &chain.joints[j];
-                if let Some(dof) = joint.dof {
-                    let mag = q0[dof].abs() + (q1[dof] - q0[dof]).abs();
-                    if joint.spec.kind.is_rotational() {
-                        q_rot += mag;
-                    } else {
-                        q_slide += mag;
-                        slide_len += q0[dof].abs().max_nan(q1[dof].abs());
-                    }
-                }
-                at = joint.spec.parent;
-            }
-            let data = &chain.links[l];
-            let len = (base + data.origin_reach + slide_len + data.reach)
-                * (T::ONE + gamma::<T>(2 * depth + 4));
-            let eps = gamma::<T>(64 * (depth + 1))
-                + gamma::<T>(3) * q_rot * (T::ONE + gamma::<T>(depth + 2));
-            let delta = (eps * len + gamma::<T>(3) * q_slide) * (T::ONE + gamma::<T>(4))
-                + T::from_u32(16) * T::ETA_NORMAL;
+            let (delta, eps, reach) = link_errors(chain, q0, q1, l, chain.links[l].reach);
             self.delta.push(delta);
             self.axis.push(eps);
-            self.reach.push(len + delta);
+            self.reach.push(reach);
         }
     }
+}
+
+/// Lemma 13.3 for link `l` of a chain on the segment `q0 -> q1`, for the
+/// link's points within `local_reach` of its frame's origin: `(delta,
+/// epsilon_R, reach)`. For a link whose path from the root has `m` joints
+/// (fixed ones included),
+/// `epsilon_R = gamma_{128 (m + 1)} + sum over its turning joints of gamma_3 (|q0_j| + |q1_j - q0_j|) + eta_N`
+/// and `delta = epsilon_R L + sum over its sliding joints of gamma_3 (|q0_j| + |q1_j - q0_j|) + 16 eta_N`,
+/// `L = |x_base| + sum |o_j| + sum over sliding joints max(|q0_j|, |q1_j|) + local_reach`
+/// (each rounded up); `reach = L + delta` bounds every placed point. Valid
+/// while `m (m + 1) u <= 2^-9` (`m <= 180` in `f32`); deeper, `+inf`.
+pub(crate) fn link_errors<T: Float>(
+    chain: &Chain<T>,
+    q0: &[T],
+    q1: &[T],
+    l: usize,
+    local_reach: T,
+) -> (T, T, T) {
+    let base = chain.base.translation.length();
+    let mut depth = 0u32;
+    let mut q_rot = T::ZERO;
+    let mut q_slide = T::ZERO;
+    let mut slide_len = T::ZERO;
+    let mut at = l;
+    while let Some(j) = chain.links[at].parent_joint {
+        depth += 1;
+        let joint = &chain.joints[j];
+        if let Some(dof) = joint.dof {
+            let mag = q0[dof].abs() + (q1[dof] - q0[dof]).abs();
+            if joint.spec.kind.is_rotational() {
+                q_rot += mag;
+            } else {
+                q_slide += mag;
+                slide_len += q0[dof].abs().max_nan(q1[dof].abs());
+            }
+        }
+        at = joint.spec.parent;
+    }
+    let data = &chain.links[l];
+    let len =
+        (base + data.origin_reach + slide_len + local_reach) * (T::ONE + gamma::<T>(2 * depth + 4));
+    // Second-order terms stay inside the constant's slack while
+    // `m (m + 1) u <= 2^-9` (proofs/13-chains.md, Lemma 13.3).
+    let too_deep = T::from_f64(f64::from(depth) * (f64::from(depth) + 1.0)) * T::UNIT_ROUNDOFF
+        > T::from_f64(1.0 / 512.0);
+    let eps = if too_deep {
+        T::INFINITY
+    } else {
+        gamma::<T>(128 * (depth + 1))
+            + gamma::<T>(3) * q_rot * (T::ONE + gamma::<T>(depth + 2))
+            + T::ETA_NORMAL
+    };
+    let delta = (eps * len + gamma::<T>(3) * q_slide) * (T::ONE + gamma::<T>(4))
+        + T::from_u32(16) * T::ETA_NORMAL;
+    (delta, eps, len + delta)
 }
 
 impl<T: Float> Chain<T> {
@@ -237,7 +271,15 @@ impl<T: Float> Chain<T> {
         if link >= self.links.len() {
             return Err(ChainError::NoSuchLink(link));
         }
-        let n = Vec3::from_array(n)
+        // Scaled by its largest component first (exactly for that one), so
+        // that no square underflows in the normalisation: the computed unit
+        // vector is then within `6u` of `n / |n|` (Lemma 13.3).
+        let n = Vec3::from_array(n);
+        let big = n.max_abs();
+        if !(big > T::ZERO && big.is_finite()) {
+            return Err(ChainError::InvalidParameter("n must be nonzero and finite"));
+        }
+        let n = Vec3::from_array(n.to_array().map(|x| x / big))
             .try_normalize()
             .filter(|n| n.is_finite())
             .ok_or(ChainError::InvalidParameter("n must be nonzero and finite"))?;
@@ -266,10 +308,59 @@ impl<T: Float> Chain<T> {
             .collect();
         let mut errors = LinkErrors::default();
         errors.compute(self, q0, q1);
+        // The centre may lie beyond the link's mesh: its placement error is
+        // that of a point at its distance from the link frame's origin.
+        let local = self.links[link]
+            .reach
+            .max_nan(c.length() * (T::ONE + gamma::<T>(2)));
+        let (delta, eps, reach) = link_errors(self, q0, q1, link, local);
+        errors.delta[link] = delta;
+        errors.axis[link] = eps;
+        errors.reach[link] = reach;
         let mut m = LinkMotion::still(Pose::IDENTITY, T::ZERO, T::ZERO);
         let dt = (t1 - t0) * (T::ONE + T::UNIT_ROUNDOFF);
         m.fill(self, link, &poses, &frames, &rate, 0, dt, &errors);
         let cw = m.pose.transform_point(c);
         Ok(m.ball_speed(cw, radius, n))
+    }
+
+    /// Lemma 13.3's `delta` (`proofs/13-chains.md`): an upper bound of the
+    /// distance between a placed point of link `link` as this crate computes
+    /// it and its exact place, for every point within the link's mesh reach
+    /// (the frame's origin alone for a link without a mesh), at every time
+    /// `t` of the segment `q0 -> q1`. "Computed" is
+    /// `try_forward_kinematics(q)` with `q = q0 + t * (q1 - q0)` evaluated
+    /// in `T`, then `Pose::transform_point`; "exact" is the forward
+    /// kinematics of the exact `q0 + t (q1 - q0)` in real arithmetic, with
+    /// unit axes `axis / |axis|` and the origins' and base's rotations taken
+    /// as exact rotations within `48 u` of the stored matrices.
+    ///
+    /// ```
+    /// use motion_bound::chain::{ChainBuilder, JointKind, JointSpec};
+    /// use motion_bound::{Pose, Vec3};
+    /// let mut b = ChainBuilder::<f32>::new();
+    /// let base = b.add_link("base", None)?;
+    /// let arm = b.add_link("arm", None)?;
+    /// b.add_joint(JointSpec {
+    ///     name: "j".into(), kind: JointKind::Revolute, parent: base, child: arm,
+    ///     origin: Pose::from_translation(Vec3::new(1.0, 0.0, 0.0)),
+    ///     axis: [0.0, 0.0, 1.0], limits: None,
+    /// })?;
+    /// let chain = b.build()?;
+    /// // The arm's frame origin, 1 from the world origin, one joint deep:
+    /// // within about 261 u (gamma_256 and the angle's gamma_3) of its exact place.
+    /// let delta = chain.placement_error_bound(&[0.0], &[1.0], arm)?;
+    /// assert!(delta > 256.0 * f32::EPSILON / 2.0 && delta < 300.0 * f32::EPSILON / 2.0);
+    /// # Ok::<(), motion_bound::chain::ChainError>(())
+    /// ```
+    ///
+    /// # Errors
+    /// [`ChainError::WrongDof`], [`ChainError::NonFiniteCoordinate`],
+    /// [`ChainError::NoSuchLink`].
+    pub fn placement_error_bound(&self, q0: &[T], q1: &[T], link: usize) -> Result<T, ChainError> {
+        self.check_q(q0)?;
+        self.check_q(q1)?;
+        let data = self.links.get(link).ok_or(ChainError::NoSuchLink(link))?;
+        Ok(link_errors(self, q0, q1, link, data.reach).0)
     }
 }
