@@ -10,7 +10,7 @@ use crate::bvh::Hierarchy;
 use crate::chain::bound::{LinkErrors, LinkMotion};
 use crate::chain::model::{Chain, ChainError, JointFrame};
 use crate::geometry::closest::triangle_triangle_vec;
-use crate::rounding::{gamma, gap_down, step_down, sum_reaches};
+use crate::rounding::{advance_down, gamma, gap_down, step_down, sum_reaches};
 use crate::{BallTree, Float, Point3, Pose, TriMesh, Vec3};
 
 /// A still body of the chain's surroundings: a mesh (its ball tree) placed
@@ -216,7 +216,7 @@ pub struct ChainParams<T> {
     pub contact_distance: T,
     /// Iterations per pair and segment (default 10,000).
     pub max_iterations: usize,
-    /// Sub-intervals of the broad phase's swept balls (default 8).
+    /// Sub-intervals of the broad phase's swept balls (1 to 64, default 32).
     pub broad_pieces: usize,
 }
 
@@ -225,7 +225,7 @@ impl<T: Float> Default for ChainParams<T> {
         Self {
             contact_distance: T::from_f64(1e-3),
             max_iterations: 10_000,
-            broad_pieces: 8,
+            broad_pieces: 32,
         }
     }
 }
@@ -244,9 +244,9 @@ impl<T: Float> ChainParams<T> {
                 "contact_distance must be positive and finite",
             ));
         }
-        if self.max_iterations == 0 || self.broad_pieces == 0 || self.broad_pieces > 1024 {
+        if self.max_iterations == 0 || self.broad_pieces == 0 || self.broad_pieces > 64 {
             return Err(ChainError::InvalidParameter(
-                "max_iterations and broad_pieces (at most 1024) must be positive",
+                "max_iterations and broad_pieces (1 to 64) must be positive",
             ));
         }
         Ok(())
@@ -505,7 +505,18 @@ impl<T: Float> ChainScene<T> {
                 continue;
             };
             let mut stats = ChainStats::default();
-            let d = min_gap(ta, tb, a, b, best.0, T::ZERO, &mut work.stack, &mut stats).gap;
+            let d = min_gap(
+                ta,
+                tb,
+                a,
+                b,
+                best.0,
+                T::ZERO,
+                T::ZERO,
+                &mut work.stack,
+                &mut stats,
+            )
+            .gap;
             if d < best.0 {
                 best = (d, Some(pair));
             }
@@ -582,7 +593,17 @@ impl<T: Float> ChainScene<T> {
             };
             // Node pairs whose certified gap exceeds the distance are not refined.
             let cap = distance + T::ETA_NORMAL + T::TWO * (a.delta + b.delta);
-            let near = min_gap(ta, tb, a, b, cap, T::ZERO, &mut work.stack, &mut stats);
+            let near = min_gap(
+                ta,
+                tb,
+                a,
+                b,
+                cap,
+                T::ZERO,
+                distance,
+                &mut work.stack,
+                &mut stats,
+            );
             if near.closest.is_some_and(|(d, _, _)| d <= distance) {
                 out.push(pair);
                 if first {
@@ -675,14 +696,18 @@ impl<T: Float> ChainScene<T> {
     }
 
     /// The two hierarchies of a pair (every pair is made of links with
-    /// geometry, so both exist).
+    /// geometry, so both exist): an obstacle with long triangles (a table,
+    /// a pole) is taken in pieces against a link of small triangles; links
+    /// are taken whole (a coarse collision mesh cut into pieces against
+    /// another link multiplies the work).
     fn trees(&self, pair: ChainPair) -> Option<(&Hierarchy<T>, &Hierarchy<T>)> {
-        let tree = |l: usize| self.chain.links[l].tree.as_ref().map(|t| &t.whole);
+        let tree = |l: usize| self.chain.links[l].tree.as_ref();
         match pair {
             ChainPair::Obstacle { link, obstacle } => {
-                Some((tree(link)?, &self.obstacles.get(obstacle)?.tree.whole))
+                let (a, b) = (tree(link)?, &self.obstacles.get(obstacle)?.tree);
+                Some((&a.whole, b.against(a)))
             }
-            ChainPair::SelfCollision { a, b } => Some((tree(a)?, tree(b)?)),
+            ChainPair::SelfCollision { a, b } => Some((&tree(a)?.whole, &tree(b)?.whole)),
         }
     }
 
@@ -696,11 +721,16 @@ impl<T: Float> ChainScene<T> {
                 .map(|(a, b)| (*b - *a).abs() * (T::ONE + gamma::<T>(2))),
         );
         let pairs = self.pairs();
-        let live = self.broad_phase(q0, q1, &pairs, work, &mut stats);
+        let mut live = self.broad_phase(q0, q1, &pairs, work, &mut stats);
+        // Pairs whose swept volumes meet earliest first: an early contact
+        // found first ends every later pair's advance there.
+        live.sort_by_key(|&(_, mask)| mask.trailing_zeros());
+        let k = self.params.broad_pieces;
+        let piece_start = |i: usize| T::from_u32(i as u32) / T::from_u32(k as u32);
         let mut best: Option<ChainContact<T>> = None;
         let mut limit: Option<(T, ChainPair)> = None;
         let cd = self.params.contact_distance;
-        for pair in live {
+        for (pair, mask) in live {
             let Some((ta, tb)) = self.trees(pair) else {
                 continue;
             };
@@ -713,6 +743,21 @@ impl<T: Float> ChainScene<T> {
             // it doubles while steps reach it and follows them when they do not.
             let mut horizon = T::ONE / T::from_u32(8);
             loop {
+                // Skip the broad phase's pieces in which the pair's swept
+                // volumes are apart (certified free there).
+                let mut piece = (t.to_f64() * k as f64) as usize;
+                while piece + 1 < k && t >= piece_start(piece + 1) {
+                    piece += 1;
+                }
+                while piece > 0 && t < piece_start(piece) {
+                    piece -= 1;
+                }
+                if mask >> piece & 1 == 0 {
+                    match (piece + 1..k).find(|&i| mask >> i & 1 == 1) {
+                        Some(next) => t = piece_start(next),
+                        None => break,
+                    }
+                }
                 if t >= until {
                     break;
                 }
@@ -747,7 +792,21 @@ impl<T: Float> ChainScene<T> {
                         break;
                     }
                     Step::Advance(s) => {
+                        if s == T::INFINITY {
+                            // Still: free for the rest of the interval.
+                            break;
+                        }
+                        // The bounds hold over `h` only.
+                        let s = s.min_nan(h);
                         if sum_reaches(t, s, until) {
+                            break;
+                        }
+                        let next = advance_down(t, s);
+                        if s.is_nan() || s <= T::ZERO || next <= t {
+                            // No step the rounding can resolve: undecided here.
+                            if limit.is_none_or(|(lt, _)| t < lt) {
+                                limit = Some((t, pair));
+                            }
                             break;
                         }
                         horizon = if s >= h {
@@ -755,15 +814,7 @@ impl<T: Float> ChainScene<T> {
                         } else {
                             (s * T::TWO).max_nan(T::ONE / T::from_u32(1 << 20))
                         };
-                        let next = t + s;
-                        // Round down so that the exact `t + s` is not passed.
-                        let next = if next - t > s { next.next_down() } else { next };
-                        if next > t {
-                            t = next;
-                        } else {
-                            // A step below the time resolution: count on.
-                            t = t.next_up();
-                        }
+                        t = next;
                     }
                 }
             }
@@ -781,8 +832,10 @@ impl<T: Float> ChainScene<T> {
 
     /// The broad phase: each link's root ball swept over `broad_pieces`
     /// sub-intervals (its centre at the piece's start, its radius grown by
-    /// the undirected speed bound over the piece) against each obstacle's
-    /// root ball and each other link's swept ball over the same piece.
+    /// the undirected speed bound over the piece and twice the placement
+    /// error) against each obstacle's world box and each other link's swept
+    /// ball over the same piece. Each live pair comes with the mask of the
+    /// pieces in which its volumes may meet.
     fn broad_phase(
         &self,
         q0: &[T],
@@ -790,7 +843,7 @@ impl<T: Float> ChainScene<T> {
         pairs: &[(ChainPair, bool)],
         work: &mut Work<T>,
         stats: &mut ChainStats,
-    ) -> Vec<ChainPair> {
+    ) -> Vec<(ChainPair, u64)> {
         let k = self.params.broad_pieces;
         let n = self.chain.links.len();
         let cd = self.params.contact_distance;
@@ -833,21 +886,37 @@ impl<T: Float> ChainScene<T> {
             work.a = Some(m);
             balls.push(row);
         }
-        let obstacle_balls: Vec<(Vec3<T>, T)> = self
+        // Each obstacle's world box, grown by its placement error.
+        let boxes: Vec<(Vec3<T>, Vec3<T>)> = self
             .obstacles
             .iter()
             .map(|o| {
-                let root = &o.tree.whole.nodes[0].ball;
-                let c = o.pose.transform_point(Vec3::from_array(*root.centre()));
+                let mut lo = Vec3::new(T::INFINITY, T::INFINITY, T::INFINITY).to_array();
+                let mut hi = Vec3::new(-T::INFINITY, -T::INFINITY, -T::INFINITY).to_array();
+                for v in o.mesh.vertices() {
+                    let p = o.pose.transform_point(Vec3::from_array(*v)).to_array();
+                    for d in 0..3 {
+                        lo[d] = lo[d].min_nan(p[d]);
+                        hi[d] = hi[d].max_nan(p[d]);
+                    }
+                }
+                let e = T::TWO * o.delta;
                 (
-                    c,
-                    (root.radius() + T::TWO * o.delta) * (T::ONE + gamma::<T>(4)),
+                    Vec3::from_array(lo.map(|x| x - e)),
+                    Vec3::from_array(hi.map(|x| x + e)),
                 )
             })
             .collect();
         let apart = |(ca, ra): (Vec3<T>, T), (cb, rb): (Vec3<T>, T)| {
             let d = (cb - ca).length() * (T::ONE - gamma::<T>(4));
             d > (ra + rb + cd) * (T::ONE + gamma::<T>(2))
+        };
+        let apart_box = |(c, r): (Vec3<T>, T), (lo, hi): (Vec3<T>, Vec3<T>)| {
+            let (c, lo, hi) = (c.to_array(), lo.to_array(), hi.to_array());
+            let near = [0, 1, 2].map(|d| c[d].max_nan(lo[d]).min_nan(hi[d]));
+            let d =
+                (Vec3::from_array(c) - Vec3::from_array(near)).length() * (T::ONE - gamma::<T>(4));
+            d > (r + cd) * (T::ONE + gamma::<T>(2))
         };
         let mut live = Vec::new();
         for &(pair, checked) in pairs {
@@ -856,14 +925,20 @@ impl<T: Float> ChainScene<T> {
                 stats.excluded += 1;
                 continue;
             }
-            let near = balls.iter().any(|row| match pair {
-                ChainPair::Obstacle { link, obstacle } => {
-                    !apart(row[link], obstacle_balls[obstacle])
+            let mut mask = 0u64;
+            for (i, row) in balls.iter().enumerate() {
+                let meet = match pair {
+                    ChainPair::Obstacle { link, obstacle } => {
+                        !apart_box(row[link], boxes[obstacle])
+                    }
+                    ChainPair::SelfCollision { a, b } => !apart(row[a], row[b]),
+                };
+                if meet {
+                    mask |= 1 << i;
                 }
-                ChainPair::SelfCollision { a, b } => !apart(row[a], row[b]),
-            });
-            if near {
-                live.push(pair);
+            }
+            if mask != 0 {
+                live.push((pair, mask));
             } else {
                 stats.culled += 1;
             }
@@ -940,10 +1015,22 @@ fn advance<T: Float>(
     let x = Vec3::new(T::ONE, T::ZERO, T::ZERO);
     let (_, va) = a.ball_speed(ca0, ra0.radius(), x);
     let (_, vb) = b.ball_speed(cb0, rb0.radius(), x);
+    if va + vb <= T::ZERO {
+        // Nothing of either moves: one distance decides the whole interval.
+        let near = min_gap(ta, tb, a, b, cd + cd, T::ZERO, cd, stack, stats);
+        return match near.closest {
+            Some((distance, on_a, on_b)) if distance.is_nan() || distance <= cd => Step::Touching {
+                distance,
+                on_a,
+                on_b,
+            },
+            _ => Step::Advance(T::INFINITY),
+        };
+    }
     // Gaps beyond what both links can close over `rest` need no refining.
     let cap = ((va + vb) * rest * (T::ONE + gamma::<T>(4))).max_nan(cd) + cd;
     let before = stats.node_pairs;
-    let near = min_gap(ta, tb, a, b, cap, T::from_f64(SLACK), stack, stats);
+    let near = min_gap(ta, tb, a, b, cap, T::from_f64(SLACK), cd, stack, stats);
     if let Some((distance, on_a, on_b)) = near.closest {
         if distance.is_nan() || distance <= cd {
             return Step::Touching {
@@ -955,7 +1042,7 @@ fn advance<T: Float>(
     }
     let floor = step_down(near.gap, T::ZERO, va, vb);
     if floor >= rest {
-        return Step::Advance(floor);
+        return Step::Advance(rest);
     }
     let budget = stats.node_pairs - before + 256;
     let mut visited = 0usize;
@@ -997,9 +1084,11 @@ fn advance<T: Float>(
                 let pb = tb.leaves[lb]
                     .corners
                     .map(|p| b.pose.transform_point(Vec3::from_array(p)));
-                let cp = triangle_triangle_vec(&pa, &pb);
-                let g = slab_gap(&pa, &pb, cp.on_b - cp.on_a, a, b);
-                let n = unit(cp.on_b - cp.on_a).unwrap_or(x);
+                // The slab gap along the leaf balls' centre line (cheap; the
+                // exact distance's direction would give a longer step).
+                let inflate = ta.leaves[la].inflate + tb.leaves[lb].inflate;
+                let g = slab_gap(&pa, &pb, cb - ca, a, b, inflate);
+                let n = unit(cb - ca).unwrap_or(x);
                 let (mu_a, _) = a.ball_speed(ca, ra, n);
                 let (mu_b, _) = b.ball_speed(cb, rb, n);
                 let s = step_down(g, T::ZERO, mu_a, mu_b);
@@ -1044,7 +1133,7 @@ fn push_children<T: Float>(
 ) {
     let d = |i: u32| {
         let c = pose.transform_point(Vec3::from_array(*children[i as usize].ball.centre()));
-        (c - other).length_squared() - children[i as usize].ball.radius()
+        (c - other).length() - children[i as usize].ball.radius()
     };
     let (near, far) = if d(node.left) <= d(node.right) {
         (node.left, node.right)
@@ -1061,7 +1150,8 @@ fn push_children<T: Float>(
 }
 
 /// The certified gap of two placed triangles along the computed direction
-/// `d` (from A towards B): `min_B q.n - max_A p.n`, less the rounding
+/// `d` (from A towards B): `min_B q.n - max_A p.n`, less the rounding and
+/// the pieces' `inflate`
 /// (`gap_down`); `-inf` for a zero direction.
 fn slab_gap<T: Float>(
     pa: &[Vec3<T>; 3],
@@ -1069,13 +1159,16 @@ fn slab_gap<T: Float>(
     d: Vec3<T>,
     a: &LinkMotion<T>,
     b: &LinkMotion<T>,
+    inflate: T,
 ) -> T {
     let Some(n) = d.try_normalize() else {
         return -T::INFINITY;
     };
     let hi_a = pa.iter().map(|p| p.dot(n)).fold(-T::INFINITY, T::max_nan);
     let lo_b = pb.iter().map(|p| p.dot(n)).fold(T::INFINITY, T::min_nan);
-    gap_down(lo_b - hi_a, a.delta, b.delta, a.reach + b.reach)
+    // A piece's exact points lie within `inflate` of its corners' triangle:
+    // taken with the placement error, as `gap_down` rounds it.
+    gap_down(lo_b - hi_a, a.delta + inflate, b.delta, a.reach + b.reach)
 }
 
 /// What the distance phase found: a certified lower bound of the distance
@@ -1096,6 +1189,7 @@ fn min_gap<T: Float>(
     b: &LinkMotion<T>,
     cap: T,
     slack: T,
+    cap_touch: T,
     stack: &mut Vec<(u32, u32)>,
     stats: &mut ChainStats,
 ) -> Near<T> {
@@ -1129,11 +1223,26 @@ fn min_gap<T: Float>(
                 let pb = tb.leaves[lb]
                     .corners
                     .map(|p| b.pose.transform_point(Vec3::from_array(p)));
-                let cp = triangle_triangle_vec(&pa, &pb);
-                if closest.is_none_or(|(d, _, _)| cp.distance < d) {
-                    closest = Some((cp.distance, cp.on_a, cp.on_b));
+                // A piece's exact points are within `inflate` of its corners' triangle.
+                let inflate =
+                    (ta.leaves[la].inflate + tb.leaves[lb].inflate) * (T::ONE + T::UNIT_ROUNDOFF);
+                // First the cheap slab gap along the balls' centre line: a
+                // pair it shows farther than the contact distance, and within
+                // the slack of the best, needs no exact distance.
+                let g0 = slab_gap(&pa, &pb, cb - ca, a, b, inflate);
+                if g0 >= best {
+                    continue;
                 }
-                let g = slab_gap(&pa, &pb, cp.on_b - cp.on_a, a, b).min_nan(cp.distance);
+                if slack > T::ZERO && g0 > cap_touch && g0 >= best * keep {
+                    kept = kept.min_nan(g0);
+                    continue;
+                }
+                let cp = triangle_triangle_vec(&pa, &pb);
+                let distance = cp.distance - inflate;
+                if closest.is_none_or(|(d, _, _)| distance < d) {
+                    closest = Some((distance, cp.on_a, cp.on_b));
+                }
+                let g = slab_gap(&pa, &pb, cp.on_b - cp.on_a, a, b, inflate).min_nan(distance);
                 let g = if g.is_nan() { -T::INFINITY } else { g };
                 if g < best {
                     best = g;

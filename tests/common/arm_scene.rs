@@ -1,0 +1,166 @@
+//! The robot-arm scene of `examples/arm.rs` and `tests/chain.rs`: an arm
+//! from `data/arms/` in clutter (a table under its base, a shelf with two
+//! boards and side walls, a box and three thin poles), with its SRDF's
+//! disabled pairs.
+
+#![allow(dead_code, unreachable_pub)]
+
+use motion_bound::chain::{Chain, ChainScene, Obstacle};
+use motion_bound::{Pose, TriMesh, Vec3};
+
+/// An obstacle: its name, mesh and pose.
+pub type Item = (&'static str, TriMesh<f64>, Pose<f64>);
+type Error = Box<dyn std::error::Error>;
+/// Two links' indices.
+pub type LinkPair = (usize, usize);
+
+/// Which arm.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Arm {
+    /// Franka Emika Panda (seven joints and two fingers).
+    Panda,
+    /// KUKA LBR iiwa (seven joints).
+    Kuka,
+}
+
+/// A box of half-extents `h` centred at `c`, each face a grid of squares
+/// at most `cell` wide (two triangles each): collision meshes of obstacles
+/// are made of triangles of about the robot's own size.
+pub fn cuboid(
+    c: [f64; 3],
+    h: [f64; 3],
+    cell: f64,
+) -> Result<(TriMesh<f64>, Pose<f64>), Box<dyn std::error::Error>> {
+    let mut v: Vec<[f64; 3]> = Vec::new();
+    let mut t: Vec<[u32; 3]> = Vec::new();
+    // Each face: fixed axis `k` at side `s`, spanned by axes `u` and `w`.
+    for k in 0..3 {
+        for s in [-1.0, 1.0] {
+            let (u, w) = ((k + 1) % 3, (k + 2) % 3);
+            let nu = (2.0 * h[u] / cell).ceil().max(1.0) as u32;
+            let nw = (2.0 * h[w] / cell).ceil().max(1.0) as u32;
+            let base = v.len() as u32;
+            for i in 0..=nu {
+                for j in 0..=nw {
+                    let mut p = [0.0; 3];
+                    p[k] = s * h[k];
+                    p[u] = -h[u] + 2.0 * h[u] * f64::from(i) / f64::from(nu);
+                    p[w] = -h[w] + 2.0 * h[w] * f64::from(j) / f64::from(nw);
+                    v.push(p);
+                }
+            }
+            let at = |i: u32, j: u32| base + i * (nw + 1) + j;
+            for i in 0..nu {
+                for j in 0..nw {
+                    let (a, b, c2, d) = (at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+                    // Outward for s = +1 (u x w = +k); flipped for s = -1.
+                    if s > 0.0 {
+                        t.push([a, b, c2]);
+                        t.push([a, c2, d]);
+                    } else {
+                        t.push([a, c2, b]);
+                        t.push([a, d, c2]);
+                    }
+                }
+            }
+        }
+    }
+    Ok((
+        TriMesh::try_new(v, t)?,
+        Pose::from_translation(Vec3::from_array(c)),
+    ))
+}
+
+/// The Panda's pairs of links that MoveIt never checks, from Franka Emika's
+/// MoveIt configuration (`franka_ros`, `franka_moveit_config/config/franka_emika.srdf`,
+/// Apache-2.0; its `disable_collisions` entries, Adjacent, Default and Never).
+pub const PANDA_SRDF_DISABLED: [(&str, &str); 36] = [
+    ("hand", "leftfinger"),
+    ("hand", "link3"),
+    ("hand", "link4"),
+    ("hand", "link5"),
+    ("hand", "link6"),
+    ("hand", "link7"),
+    ("hand", "rightfinger"),
+    ("leftfinger", "link3"),
+    ("leftfinger", "link4"),
+    ("leftfinger", "link6"),
+    ("leftfinger", "link7"),
+    ("leftfinger", "rightfinger"),
+    ("link0", "link1"),
+    ("link0", "link2"),
+    ("link0", "link3"),
+    ("link0", "link4"),
+    ("link1", "link2"),
+    ("link1", "link3"),
+    ("link1", "link4"),
+    ("link2", "link3"),
+    ("link2", "link4"),
+    ("link2", "link6"),
+    ("link3", "link4"),
+    ("link3", "link5"),
+    ("link3", "link6"),
+    ("link3", "link7"),
+    ("link3", "rightfinger"),
+    ("link4", "link5"),
+    ("link4", "link6"),
+    ("link4", "link7"),
+    ("link4", "rightfinger"),
+    ("link5", "link6"),
+    ("link5", "link7"),
+    ("link6", "link7"),
+    ("link6", "rightfinger"),
+    ("link7", "rightfinger"),
+];
+
+/// The clutter: a table under the base, a shelf with two boards and side
+/// walls in front, a box on the table and three thin poles (1 cm square).
+pub fn clutter() -> Result<Vec<Item>, Error> {
+    let items: [(&str, [f64; 3], [f64; 3]); 9] = [
+        ("table", [0.2, 0.0, -0.045], [0.7, 0.7, 0.025]),
+        ("shelf low", [0.6, 0.0, 0.3], [0.12, 0.3, 0.01]),
+        ("shelf high", [0.6, 0.0, 0.6], [0.12, 0.3, 0.01]),
+        ("shelf left", [0.6, 0.31, 0.45], [0.12, 0.01, 0.45]),
+        ("shelf right", [0.6, -0.31, 0.45], [0.12, 0.01, 0.45]),
+        ("box", [-0.1, 0.5, 0.05], [0.07, 0.07, 0.07]),
+        ("pole a", [-0.3, 0.35, 0.6], [0.005, 0.005, 0.6]),
+        ("pole b", [0.2, -0.45, 0.6], [0.005, 0.005, 0.6]),
+        ("pole c", [-0.4, -0.3, 0.6], [0.005, 0.005, 0.6]),
+    ];
+    items
+        .iter()
+        .map(|&(name, c, h)| {
+            let (m, p) = cuboid(c, h, 0.04)?;
+            Ok((name, m, p))
+        })
+        .collect()
+}
+
+/// The arm in the clutter, with the SRDF's disabled pairs (the Panda's) and
+/// the pairs touching at its ready pose disabled; and those last pairs.
+pub fn arm_scene(arm: Arm) -> Result<(ChainScene<f64>, Vec<LinkPair>), Error> {
+    let (path, ready): (&str, Vec<f64>) = match arm {
+        Arm::Panda => (
+            "data/arms/franka_panda/panda.urdf",
+            vec![0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785, 0.02, 0.02],
+        ),
+        Arm::Kuka => (
+            "data/arms/kuka_iiwa/model.urdf",
+            vec![0.0, 0.5, 0.0, -1.2, 0.0, 0.8, 0.0],
+        ),
+    };
+    let chain = Chain::<f64>::from_urdf_file(format!("{}/{path}", env!("CARGO_MANIFEST_DIR")))?;
+    let mut scene = ChainScene::new(chain);
+    for (name, mesh, pose) in clutter()? {
+        scene.add_obstacle(Obstacle::try_new(name, mesh, pose)?);
+    }
+    if arm == Arm::Panda {
+        for (a, b) in PANDA_SRDF_DISABLED {
+            let a = scene.chain().link_index(&format!("panda_{a}"))?;
+            let b = scene.chain().link_index(&format!("panda_{b}"))?;
+            scene.allow_collision(a, b);
+        }
+    }
+    let defaults = scene.allow_collisions_at(&ready, 0.0)?;
+    Ok((scene, defaults))
+}
