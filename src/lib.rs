@@ -101,6 +101,16 @@
 //! skips are proved in [`proofs::scene`] and counted in
 //! [`scene::SceneStats`]. See the [`scene`] module.
 //!
+//! ## Robot arms
+//!
+//! [`chain::Chain`] is a kinematic tree (links with collision meshes;
+//! revolute, continuous, prismatic and fixed joints), from code or a URDF
+//! (feature `urdf`); [`chain::ChainScene`] checks its joint-space segments
+//! `q0 -> q1` against still obstacles and itself by conservative advancement
+//! with a directed bound through the joints above each link
+//! ([`proofs::chains`]): the first contact, never later than the first touch,
+//! or `Separated`. See the [`chain`] module.
+//!
 //! ## Conventions
 //!
 //! * **Frames.** `n`, `v`, `w` and positions are world vectors; body points
@@ -154,9 +164,10 @@
 //! |---|---|---|
 //! | `std` | yes | float functions from `std`; implies `alloc` |
 //! | `libm` | no | float functions from `libm`; with `std` off the crate is `#![no_std]` (and allocation-free unless `alloc` is on) |
-//! | `alloc` | with `std` | owned meshes ([`TriMesh`]), ball trees ([`BallTree`]), the mesh stepper, OFF input and output; needs no `std` |
+//! | `alloc` | with `std` | owned meshes ([`TriMesh`]), ball trees ([`BallTree`]), the mesh stepper, chains ([`chain`]), OFF and STL input, OFF output; needs no `std` |
 //! | `scenes` | no | built-in bodies ([`scenes`]): the seed's torus knots, tori, boards, boxes, icospheres |
 //! | `obj` | no | OBJ input with `tobj` (`TriMesh::from_obj_str`); implies `std` and `alloc` |
+//! | `urdf` | no | chains from URDF files (`Chain::from_urdf_file`, with `urdf-rs`), their meshes as OBJ or STL; implies `obj` |
 //! | `mint` | no | conversions to and from `mint` vectors, points and quaternions (glam, nalgebra and cgmath interop) |
 //! | `approx` | no | `approx` comparison traits on the public vector types |
 //! | `reference` | no | **test support**: the exact closed-form oracle ([`reference`](mod@reference)) |

@@ -5,7 +5,7 @@
 //! A [`Chain`] is a tree of links (each with a collision mesh in its own
 //! frame and its [`BallTree`](crate::BallTree), built once) joined by
 //! revolute, continuous, prismatic and fixed joints ([`JointKind`]), as in a
-//! URDF ([`Chain::from_urdf_file`] with the feature `urdf`). A planner's
+//! URDF (`Chain::from_urdf_file` with the feature `urdf`). A planner's
 //! motion between two waypoints is the joint-space segment
 //! `q(t) = q0 + t (q1 - q0)`, `t` in `[0, 1]`; no link of it moves with a
 //! constant linear and angular velocity, so the rigid bounds of this crate
