@@ -218,7 +218,7 @@ impl<T: Float> ChainBuilder<T> {
         let origin_ok = joint.origin.is_finite()
             && joint.origin.translation.max_abs() <= T::MAX_INPUT
             && joint.origin.rotation_max_abs() <= T::TWO;
-        if joint.kind.is_movable() && (!axis.is_finite() || axis.try_normalize().is_none()) {
+        if joint.kind.is_movable() && (!axis.is_finite() || unit_axis(axis).is_none()) {
             return Err(ChainError::BadJoint(joint.name));
         }
         if !origin_ok || joint.parent == joint.child {
@@ -284,7 +284,11 @@ impl<T: Float> ChainBuilder<T> {
             .enumerate()
             .map(|(j, s)| JointData {
                 axis: if s.kind.is_movable() {
-                    Vec3::from_array(s.axis).normalize_or(Vec3::new(T::ZERO, T::ZERO, T::ONE))
+                    unit_axis(Vec3::from_array(s.axis)).unwrap_or(Vec3::new(
+                        T::ZERO,
+                        T::ZERO,
+                        T::ONE,
+                    ))
                 } else {
                     Vec3::new(T::ZERO, T::ZERO, T::ONE)
                 },
@@ -575,6 +579,17 @@ impl<T: Float> Chain<T> {
             poses[joint.spec.child] = child;
         }
     }
+}
+
+/// The unit vector along `a`, scaled by its largest component first (so that
+/// tiny and huge axes, whose squared length underflows or overflows, come
+/// out of unit length); `None` for a zero or non-finite axis.
+pub(crate) fn unit_axis<T: Float>(a: Vec3<T>) -> Option<Vec3<T>> {
+    let m = a.max_abs();
+    if !(m > T::ZERO && m.is_finite()) {
+        return None;
+    }
+    Vec3::from_array(a.to_array().map(|x| x / m)).try_normalize()
 }
 
 /// `a * b` as placements: `p |-> R_a (R_b p + x_b) + x_a`.
