@@ -89,5 +89,6 @@ fn main() {
     count += write_raw("gjk", seeds::gjk_seeds());
     count += write_raw("far", seeds::far_seeds());
     count += write_raw("shapes", seeds::shapes_seeds());
+    count += write_raw("chain", seeds::chain_seeds());
     println!("wrote {count} seeds");
 }

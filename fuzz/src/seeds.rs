@@ -939,3 +939,21 @@ pub fn shapes_seeds() -> Vec<(String, Vec<u8>)> {
     }
     out
 }
+
+/// Seeds of the `chain` target (raw bytes read as bounded numbers): a few
+/// patterns that read as moderate chains, segments and obstacles.
+pub fn chain_seeds() -> Vec<(String, Vec<u8>)> {
+    let mut out = Vec::new();
+    for (name, mul, add) in [
+        ("mild", 37u8, 11u8),
+        ("turning", 53, 7),
+        ("sliding", 91, 29),
+        ("dense", 13, 201),
+    ] {
+        let bytes: Vec<u8> = (0..=255u8)
+            .map(|k| k.wrapping_mul(mul).wrapping_add(add))
+            .collect();
+        out.push((name.to_string(), bytes));
+    }
+    out
+}

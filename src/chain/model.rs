@@ -501,11 +501,28 @@ impl<T: Float> Chain<T> {
             .collect()
     }
 
-    /// The chain placed by `base` (the root link's world pose).
+    /// The chain placed by `base` (the root link's world pose), unchecked:
+    /// a base that is not finite leaves every query undecided
+    /// ([`try_with_base`](Self::try_with_base) checks it).
     #[must_use]
     pub fn with_base(mut self, base: Pose<T>) -> Self {
         self.base = base;
         self
+    }
+
+    /// The chain placed by `base`, checked as a joint origin is.
+    ///
+    /// # Errors
+    /// [`ChainError::InvalidParameter`] for a base that is not finite, beyond
+    /// the input range, or whose rotation has an entry beyond 2.
+    pub fn try_with_base(self, base: Pose<T>) -> Result<Self, ChainError> {
+        if !base.is_finite()
+            || base.translation.max_abs() > T::MAX_INPUT
+            || base.rotation_max_abs() > T::TWO
+        {
+            return Err(ChainError::InvalidParameter("the base pose"));
+        }
+        Ok(self.with_base(base))
     }
 
     /// The root link's world pose.

@@ -382,10 +382,12 @@ impl<T: Float> ChainScene<T> {
     }
 
     /// Whether links `a` and `b` are adjacent: in one rigid group, or in
-    /// groups joined by one movable joint.
+    /// groups joined by one movable joint (`false` for an index out of range).
     #[must_use]
     pub fn adjacent(&self, a: usize, b: usize) -> bool {
-        let (ga, gb) = (self.group[a], self.group[b]);
+        let (Some(&ga), Some(&gb)) = (self.group.get(a), self.group.get(b)) else {
+            return false;
+        };
         if ga == gb {
             return true;
         }
@@ -402,8 +404,8 @@ impl<T: Float> ChainScene<T> {
     #[must_use]
     pub fn checks_pair(&self, a: usize, b: usize) -> bool {
         a != b
-            && self.chain.links[a].tree.is_some()
-            && self.chain.links[b].tree.is_some()
+            && self.chain.links.get(a).is_some_and(|l| l.tree.is_some())
+            && self.chain.links.get(b).is_some_and(|l| l.tree.is_some())
             && !self.adjacent(a, b)
             && !self.allowed.contains(&(a.min(b), a.max(b)))
     }
