@@ -57,6 +57,10 @@ pub enum InputError {
     NotASubInterval,
     /// A quaternion of length zero (no rotation).
     ZeroQuaternion,
+    /// A 3x3 matrix that is not a rotation: not orthonormal to within
+    /// [`Rotation::MATRIX_TOLERANCE`](crate::Rotation::MATRIX_TOLERANCE), or a
+    /// reflection (negative determinant).
+    NotARotation,
     /// A duration that is zero or negative.
     NonPositiveDuration,
     /// A triangle list with no triangle (a ball tree needs one).
@@ -112,6 +116,9 @@ impl fmt::Display for InputError {
                 f.write_str("sub-interval is not inside the motion's interval")
             }
             Self::ZeroQuaternion => f.write_str("quaternion has zero length"),
+            Self::NotARotation => f.write_str(
+                "matrix is not a rotation (not orthonormal to within 1e-6, or a reflection)",
+            ),
             Self::NonPositiveDuration => f.write_str("duration is not positive"),
             Self::NoTriangles => f.write_str("no triangle"),
             Self::PieceLength => f.write_str("a piece length that is not positive"),

@@ -84,6 +84,96 @@ impl<T: Float> Rotation<T> {
         })
     }
 
+    /// How far from orthonormal a matrix given to
+    /// [`try_from_matrix`](Self::try_from_matrix) may be: each entry of
+    /// `M^T M - I` at most `1e-6` in magnitude (at least `64` units of
+    /// rounding for `f32`, whose own products carry more).
+    pub const MATRIX_TOLERANCE: f64 = 1e-6;
+
+    /// The rotation of the matrix `m` (`m[i][j]` in row `i`, column `j`;
+    /// `rotate(v) = m v`), as a homogeneous transform's upper-left block
+    /// gives it: the rotation of the quaternion nearest to `m`'s by
+    /// Shepperd's method, which is `m` itself when `m` is exactly a
+    /// rotation. A matrix a little off (rounded, or composed in `f32`) is
+    /// accepted within [`MATRIX_TOLERANCE`](Self::MATRIX_TOLERANCE), and the
+    /// body is then placed by the returned rotation, which differs from `m`
+    /// by about that much times the body's reach.
+    ///
+    /// # Errors
+    /// [`InputError::NonFinite`] with [`Quantity::Orientation`] for a NaN or
+    /// infinite entry; [`InputError::NotARotation`] for a matrix farther from
+    /// orthonormal, a scaled one, or a reflection.
+    ///
+    /// ```
+    /// use motion_bound::{InputError, Rotation, Vec3};
+    /// let quarter = [[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]; // 90 degrees about z
+    /// let r = Rotation::try_from_matrix(quarter)?;
+    /// assert!((r.rotate(Vec3::new(1.0, 0.0, 0.0)) - Vec3::new(0.0, 1.0, 0.0)).length() < 1e-15);
+    /// let mirror = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, -1.0]];
+    /// assert_eq!(Rotation::try_from_matrix(mirror).err(), Some(InputError::NotARotation));
+    /// # Ok::<(), InputError>(())
+    /// ```
+    pub fn try_from_matrix(m: [[T; 3]; 3]) -> Result<Self, InputError> {
+        if m.iter().flatten().any(|c| !c.is_finite()) {
+            return Err(InputError::NonFinite(Quantity::Orientation));
+        }
+        let tol = T::from_f64(Self::MATRIX_TOLERANCE).max_nan(T::UNIT_ROUNDOFF * T::from_u32(128));
+        for i in 0..3 {
+            for j in 0..3 {
+                let dot = m[0][i] * m[0][j] + m[1][i] * m[1][j] + m[2][i] * m[2][j];
+                let target = if i == j { T::ONE } else { T::ZERO };
+                let close = (dot - target).abs() <= tol; // false for NaN
+                if !close {
+                    return Err(InputError::NotARotation);
+                }
+            }
+        }
+        let det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        let proper = det > T::ZERO; // false for NaN
+        if !proper {
+            return Err(InputError::NotARotation);
+        }
+        // Shepperd: divide by the largest of 4w^2, 4x^2, 4y^2, 4z^2.
+        let quarter = T::HALF * T::HALF;
+        let trace = m[0][0] + m[1][1] + m[2][2];
+        let (w, x, y, z) = if trace > T::ZERO {
+            let s = (trace + T::ONE).sqrt() * T::TWO;
+            (
+                s * quarter,
+                (m[2][1] - m[1][2]) / s,
+                (m[0][2] - m[2][0]) / s,
+                (m[1][0] - m[0][1]) / s,
+            )
+        } else if m[0][0] > m[1][1] && m[0][0] > m[2][2] {
+            let s = (T::ONE + m[0][0] - m[1][1] - m[2][2]).sqrt() * T::TWO;
+            (
+                (m[2][1] - m[1][2]) / s,
+                s * quarter,
+                (m[0][1] + m[1][0]) / s,
+                (m[0][2] + m[2][0]) / s,
+            )
+        } else if m[1][1] > m[2][2] {
+            let s = (T::ONE + m[1][1] - m[0][0] - m[2][2]).sqrt() * T::TWO;
+            (
+                (m[0][2] - m[2][0]) / s,
+                (m[0][1] + m[1][0]) / s,
+                s * quarter,
+                (m[1][2] + m[2][1]) / s,
+            )
+        } else {
+            let s = (T::ONE + m[2][2] - m[0][0] - m[1][1]).sqrt() * T::TWO;
+            (
+                (m[1][0] - m[0][1]) / s,
+                (m[0][2] + m[2][0]) / s,
+                (m[1][2] + m[2][1]) / s,
+                s * quarter,
+            )
+        };
+        Self::try_from_quaternion(w, x, y, z)
+    }
+
     /// The rotation by `angle` radians about `axis` (right-handed; any
     /// finite nonzero axis, normalised).
     ///
@@ -261,6 +351,70 @@ mod tests {
         assert!((twice.rotate(p) - want2).length() < 1e-15, "composition");
         let back = twice.to_scaled_axis();
         assert!((back - k * 1.8).length() < 1e-14, "scaled axis {back:?}");
+    }
+
+    /// Matrices built by Rodrigues' formula (not by `matrix`), each of
+    /// Shepperd's four branches, back to the same rotation; what is not a
+    /// rotation is refused.
+    #[test]
+    fn matrices_turn_back_into_their_rotations() {
+        let axes = [
+            Vec3::new(1.0f64, -2.0, 0.5),
+            Vec3::new(1.0, 0.0, 0.0),
+            Vec3::new(0.0, 1.0, 1e-9),
+            Vec3::new(0.0, 0.0, 1.0),
+            Vec3::new(-0.3, 0.2, 0.9),
+        ];
+        // Angles near 0 and pi take the trace branch and the diagonal ones.
+        let angles = [0.0, 1e-12, 0.4, 2.0, 3.0, core::f64::consts::PI, 3.1415];
+        let probes = [Vec3::new(0.3, 1.2, -0.7), Vec3::new(-2.0, 0.1, 0.4)];
+        for axis in axes {
+            let k = axis.try_normalize().expect("nonzero");
+            for angle in angles {
+                let e = [
+                    Vec3::new(1.0, 0.0, 0.0),
+                    Vec3::new(0.0, 1.0, 0.0),
+                    Vec3::new(0.0, 0.0, 1.0),
+                ]
+                .map(|c| rotate_about_axis(c, k, angle));
+                // Columns are the images of the basis vectors.
+                let m = [
+                    [e[0].x, e[1].x, e[2].x],
+                    [e[0].y, e[1].y, e[2].y],
+                    [e[0].z, e[1].z, e[2].z],
+                ];
+                let r = Rotation::try_from_matrix(m).expect("a rotation");
+                for p in probes {
+                    let want = rotate_about_axis(p, k, angle);
+                    assert!((r.rotate(p) - want).length() < 1e-14, "{axis:?} {angle}");
+                }
+                let scaled = m.map(|row| row.map(|c| c * 1.001));
+                assert_eq!(
+                    Rotation::try_from_matrix(scaled).err(),
+                    Some(InputError::NotARotation)
+                );
+                let mut mirrored = m;
+                mirrored[2] = mirrored[2].map(|c| -c);
+                assert_eq!(
+                    Rotation::try_from_matrix(mirrored).err(),
+                    Some(InputError::NotARotation)
+                );
+            }
+        }
+        let mut bad = [[1.0f64, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+        bad[1][2] = f64::NAN;
+        assert!(matches!(
+            Rotation::try_from_matrix(bad),
+            Err(InputError::NonFinite(_))
+        ));
+        let zero = [[0.0f64; 3]; 3];
+        assert_eq!(
+            Rotation::try_from_matrix(zero).err(),
+            Some(InputError::NotARotation)
+        );
+        // An f32 rotation rounded entry by entry is still accepted.
+        let r = Rotation::try_from_axis_angle(Vec3::new(1.0f32, 2.0, 3.0), 1.0).expect("valid");
+        assert!(Rotation::try_from_matrix(r.matrix()).is_ok());
     }
 
     #[test]
