@@ -1,0 +1,234 @@
+"""Certified continuous collision detection: the first time of contact of two
+moving bodies, never late and never missed (conservative advancement with proven
+motion bounds; the Rust crate motion-bound)."""
+
+from typing import Any, Iterable, Literal, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+ArrayLike = npt.ArrayLike
+PoseLike = Union["Pose", npt.ArrayLike]
+Outcome = Literal[
+    "contact", "initial_contact", "separated", "iteration_limit", "work_limit", "precision_limit"
+]
+
+class MotionBoundError(ValueError):
+    """Base class of motion_bound's errors: bad input or parameters."""
+
+class InputError(MotionBoundError):
+    """A number the core refuses (NaN, infinity, out of range, a zero direction,
+    a matrix that is not a rotation, a negative radius, an empty vertex set)."""
+
+class MeshError(MotionBoundError):
+    """A triangle mesh the crate cannot use (no triangle, an index out of range)."""
+
+class QueryError(MotionBoundError):
+    """A query that cannot run (a parameter out of range, motions over different
+    intervals, a turning half-space, two half-spaces)."""
+
+class Body:
+    """A shape in its own frame (a mesh with its ball tree, built once);
+    immutable, thread-safe, picklable."""
+
+    @property
+    def kind(
+        self,
+    ) -> Literal[
+        "mesh", "ball", "capsule", "box", "cylinder", "cone", "convex_hull", "half_space", "compound"
+    ]: ...
+    @property
+    def vertices(self) -> Optional[np.ndarray]:
+        """A mesh's `(n, 3)` vertices (a hull's points), else None."""
+    @property
+    def faces(self) -> Optional[np.ndarray]:
+        """A mesh's `(m, 3)` int64 triangles, else None."""
+    @property
+    def reach(self) -> float:
+        """An upper bound of every point's distance from the body origin."""
+
+def mesh(vertices: ArrayLike, faces: ArrayLike) -> Body:
+    """A triangle mesh: `(n, 3)` real vertices, `(m, 3)` integer faces."""
+
+def from_trimesh(mesh: Any) -> Body:
+    """The body of a `trimesh.Trimesh` (its vertices and faces)."""
+
+def ball(radius: float) -> Body: ...
+def capsule(half_height: float, radius: float) -> Body:
+    """The segment from (0, -h, 0) to (0, h, 0) rounded by `radius`."""
+
+def box(half_extents: ArrayLike, rounding: float = 0.0) -> Body: ...
+def cylinder(half_height: float, radius: float, rounding: float = 0.0) -> Body:
+    """Along the body's y axis."""
+
+def cone(half_height: float, radius: float, rounding: float = 0.0) -> Body:
+    """Along the body's y axis, apex at (0, h, 0)."""
+
+def convex_hull(points: ArrayLike, rounding: float = 0.0) -> Body: ...
+def half_space(normal: ArrayLike) -> Body:
+    """The solid {x : normal . x <= 0}; it may translate, not turn."""
+
+def compound(parts: Iterable[Tuple[Body, PoseLike]]) -> Body:
+    """Meshes and convex shapes at poses in the compound's frame, moving as one."""
+
+class Pose:
+    """A rigid placement. `Pose(matrix)` (4x4 homogeneous; the rotation block
+    orthonormal to within 1e-6) or `Pose()` (the identity)."""
+
+    def __init__(self, matrix: Optional[ArrayLike] = None) -> None: ...
+    @staticmethod
+    def from_wxyz(quaternion: ArrayLike, translation: Optional[ArrayLike] = None) -> Pose: ...
+    @staticmethod
+    def from_xyzw(quaternion: ArrayLike, translation: Optional[ArrayLike] = None) -> Pose: ...
+    @staticmethod
+    def from_translation(translation: ArrayLike) -> Pose: ...
+    @property
+    def matrix(self) -> np.ndarray: ...
+    @property
+    def wxyz(self) -> np.ndarray: ...
+    @property
+    def translation(self) -> np.ndarray: ...
+
+class Motion:
+    """A rigid motion over [0, duration]: the start pose, a constant linear
+    velocity of the body origin, a constant angular velocity about it (world
+    vectors, radians per unit time)."""
+
+    def __init__(
+        self, start: PoseLike, linear: ArrayLike, angular: ArrayLike, duration: float = 1.0
+    ) -> None: ...
+    @staticmethod
+    def between(start: PoseLike, end: PoseLike, duration: float = 1.0) -> Motion: ...
+    @staticmethod
+    def still(pose: PoseLike, duration: float = 1.0) -> Motion: ...
+    @property
+    def duration(self) -> float: ...
+    @property
+    def linear(self) -> np.ndarray: ...
+    @property
+    def angular(self) -> np.ndarray: ...
+    def matrix_at(self, t: float) -> np.ndarray:
+        """The 4x4 pose at time t."""
+
+class MotionBatch:
+    """Many motions over the same [0, duration]."""
+
+    def __init__(
+        self, starts: ArrayLike, linear: ArrayLike, angular: ArrayLike, duration: float = 1.0
+    ) -> None: ...
+    @staticmethod
+    def between(starts: ArrayLike, ends: ArrayLike, duration: float = 1.0) -> MotionBatch: ...
+    def __len__(self) -> int: ...
+    def __getitem__(self, i: int) -> Motion: ...
+
+class Report:
+    """One query's answer."""
+
+    def __init__(
+        self,
+        outcome: Outcome,
+        time: Optional[float],
+        point_a: Optional[Sequence[float]],
+        point_b: Optional[Sequence[float]],
+        normal: Optional[Sequence[float]],
+        distance: Optional[float],
+        iterations: int,
+    ) -> None: ...
+    @property
+    def outcome(self) -> Outcome: ...
+    @property
+    def hit(self) -> bool:
+        """True unless the query certified that the bodies never touch."""
+    @property
+    def time(self) -> Optional[float]:
+        """The contact time, or the safe time reached when undecided."""
+    @property
+    def point_a(self) -> Optional[list[float]]: ...
+    @property
+    def point_b(self) -> Optional[list[float]]: ...
+    @property
+    def normal(self) -> Optional[list[float]]: ...
+    @property
+    def distance(self) -> Optional[float]: ...
+    @property
+    def iterations(self) -> int: ...
+
+class BatchReport:
+    """A batch's answers as arrays, one entry per query."""
+
+    OUTCOMES: list[str]
+    def __init__(
+        self,
+        outcome_codes: ArrayLike,
+        times: ArrayLike,
+        points_a: ArrayLike,
+        points_b: ArrayLike,
+        normals: ArrayLike,
+        distances: ArrayLike,
+        iterations: ArrayLike,
+    ) -> None: ...
+    def __len__(self) -> int: ...
+    def __getitem__(self, i: int) -> Report: ...
+    @property
+    def outcome_codes(self) -> np.ndarray: ...
+    @property
+    def hits(self) -> np.ndarray: ...
+    @property
+    def times(self) -> np.ndarray: ...
+    @property
+    def points_a(self) -> np.ndarray: ...
+    @property
+    def points_b(self) -> np.ndarray: ...
+    @property
+    def normals(self) -> np.ndarray: ...
+    @property
+    def distances(self) -> np.ndarray: ...
+    @property
+    def iterations(self) -> np.ndarray: ...
+
+def time_of_impact(
+    a: Body,
+    motion_a: Motion,
+    b: Body,
+    motion_b: Motion,
+    contact_distance: float = 1e-4,
+    tolerance: float = 1e-9,
+    max_iterations: int = 100,
+) -> Report:
+    """The first time of contact (distance at most `contact_distance`), never
+    later than the first time the distance falls to half of it, never missed;
+    the GIL released."""
+
+def time_of_impact_batch(
+    a: Body,
+    motions_a: Union[Motion, MotionBatch],
+    b: Body,
+    motions_b: Union[Motion, MotionBatch],
+    contact_distance: float = 1e-4,
+    tolerance: float = 1e-9,
+    max_iterations: int = 100,
+    parallel: bool = True,
+) -> BatchReport:
+    """One query per motion, on every core, the GIL released."""
+
+class Scene:
+    """Many bodies over [0, duration]; every pair's first contact after a
+    certified broad phase."""
+
+    def __init__(self, duration: float = 1.0) -> None: ...
+    def add(self, body: Body, motion: Union[Motion, PoseLike]) -> int: ...
+    def query(
+        self,
+        contact_distance: float = 1e-4,
+        tolerance: float = 1e-9,
+        max_iterations: int = 100,
+        parallel: bool = False,
+    ) -> list[Tuple[int, int, Report]]: ...
+    @property
+    def stats(self) -> Optional[dict[str, int]]: ...
+    def __len__(self) -> int: ...
+
+def table1_scene(size: Literal["2.8K", "11K", "34K"] = "2.8K", queries: int = 200) -> dict[str, Any]:
+    """The seed's Table 1 torus knots and the Rust report's fly-by queries."""

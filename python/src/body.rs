@@ -1,0 +1,488 @@
+//! Bodies: a shape in its own frame, with what a query needs built once (a
+//! mesh's ball tree). Every kind is one class, `Body`, made by a factory
+//! function per kind; each body remembers its factory and arguments, which
+//! is how it pickles.
+
+use motion_bound::ca::{Compound, Part, Shape};
+use motion_bound::scene::BodyShape;
+use motion_bound::{BallTree, Convex, HalfSpace, Isometry, TriMesh, Vec3, VertexSet};
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::{PyList, PyTuple};
+
+use crate::arrays::{rows3, to_numpy, triangles, vec3};
+use crate::errors::{input, mesh as mesh_err};
+use crate::motion::{pose_arg, Pose};
+
+/// A primitive convex shape and how it was made.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Primitive {
+    Ball(f64),
+    Capsule(f64, f64),
+    Cuboid([f64; 3]),
+    Cylinder(f64, f64),
+    Cone(f64, f64),
+}
+
+fn primitive_convex(p: Primitive, rounding: f64) -> PyResult<Convex<'static, f64>> {
+    let c = match p {
+        Primitive::Ball(r) => Convex::try_ball(r),
+        Primitive::Capsule(h, r) => Convex::try_capsule(h, r),
+        Primitive::Cuboid(h) => Convex::try_cuboid(h),
+        Primitive::Cylinder(h, r) => Convex::try_cylinder(h, r),
+        Primitive::Cone(h, r) => Convex::try_cone(h, r),
+    }
+    .map_err(input)?;
+    if rounding == 0.0 {
+        Ok(c)
+    } else {
+        c.try_rounded(rounding).map_err(input)
+    }
+}
+
+/// A convex hull's points and rounding.
+#[derive(Clone, Debug)]
+pub(crate) struct Hull {
+    points: Vec<[f64; 3]>,
+    rounding: f64,
+}
+
+impl Hull {
+    fn new(points: Vec<[f64; 3]>, rounding: f64) -> PyResult<Self> {
+        let hull = Self { points, rounding };
+        hull.convex(None)?; // validated once here
+        Ok(hull)
+    }
+
+    fn convex(&self, at: Option<Isometry<f64>>) -> PyResult<Convex<'_, f64>> {
+        let set = VertexSet::try_new(&self.points).map_err(input)?;
+        let mut c = Convex::polytope(set);
+        if self.rounding != 0.0 {
+            c = c.try_rounded(self.rounding).map_err(input)?;
+        }
+        match at {
+            Some(pose) => c.try_placed(pose).map_err(input),
+            None => Ok(c),
+        }
+    }
+}
+
+/// A triangle mesh and its ball tree.
+#[derive(Debug)]
+pub(crate) struct MeshData {
+    pub(crate) mesh: TriMesh<f64>,
+    pub(crate) tree: BallTree<f64>,
+}
+
+impl MeshData {
+    fn new(vertices: Vec<[f64; 3]>, faces: Vec<[u32; 3]>) -> PyResult<Self> {
+        let mesh = TriMesh::try_new(vertices, faces).map_err(mesh_err)?;
+        let tree = BallTree::try_from_mesh(&mesh).map_err(input)?;
+        Ok(Self { mesh, tree })
+    }
+}
+
+/// One part of a compound, owned, already in the compound's frame.
+#[derive(Debug)]
+pub(crate) enum OwnedPart {
+    Convex(Convex<'static, f64>),
+    Hull(Hull, Isometry<f64>),
+    Mesh(MeshData),
+}
+
+/// What a body holds.
+#[derive(Debug)]
+pub(crate) enum Data {
+    Convex {
+        primitive: Primitive,
+        rounding: f64,
+        convex: Convex<'static, f64>,
+    },
+    Hull(Hull),
+    Mesh(MeshData),
+    HalfSpace {
+        normal: [f64; 3],
+        half: HalfSpace<f64>,
+    },
+    Compound {
+        /// The parts as given (for pickling).
+        given: Vec<(Py<Body>, Pose)>,
+        parts: Vec<OwnedPart>,
+    },
+}
+
+/// A body: a shape in its own frame (meshes with their ball tree, built
+/// once). Made by `mesh`, `ball`, `capsule`, `box`, `cylinder`, `cone`,
+/// `convex_hull`, `half_space`, `compound` or `from_trimesh`; immutable,
+/// shareable between threads and queries, picklable.
+#[pyclass(frozen, module = "motion_bound")]
+#[derive(Debug)]
+pub struct Body {
+    pub(crate) data: Data,
+}
+
+/// A body's shapes borrowed for one query (a compound's parts assembled).
+pub(crate) enum Prepared<'a> {
+    Convex(Convex<'a, f64>),
+    Mesh(&'a BallTree<f64>),
+    HalfSpace(HalfSpace<f64>),
+    Compound(Compound<'a, f64>),
+}
+
+impl Prepared<'_> {
+    /// The shape for a pair query.
+    pub(crate) fn shape(&self) -> Shape<'_, f64> {
+        match self {
+            Self::Convex(c) => Shape::Convex(*c),
+            Self::Mesh(t) => Shape::Mesh(t),
+            Self::HalfSpace(h) => Shape::HalfSpace(*h),
+            Self::Compound(c) => Shape::Compound(c),
+        }
+    }
+
+    /// The shape for a scene.
+    pub(crate) fn body_shape(&self) -> BodyShape<'_, f64> {
+        match self {
+            Self::Convex(c) => BodyShape::Shape(*c),
+            Self::Mesh(t) => BodyShape::Mesh(t),
+            Self::HalfSpace(h) => BodyShape::HalfSpace(*h),
+            Self::Compound(c) => BodyShape::Compound(c),
+        }
+    }
+}
+
+impl Body {
+    /// The shapes a query borrows.
+    pub(crate) fn prepare(&self) -> PyResult<Prepared<'_>> {
+        Ok(match &self.data {
+            Data::Convex { convex, .. } => Prepared::Convex(*convex),
+            Data::Hull(h) => Prepared::Convex(h.convex(None)?),
+            Data::Mesh(m) => Prepared::Mesh(&m.tree),
+            Data::HalfSpace { half, .. } => Prepared::HalfSpace(*half),
+            Data::Compound { parts, .. } => {
+                let parts = parts
+                    .iter()
+                    .map(|p| {
+                        Ok(match p {
+                            OwnedPart::Convex(c) => Part::Convex(*c),
+                            OwnedPart::Hull(h, at) => Part::Convex(h.convex(Some(*at))?),
+                            OwnedPart::Mesh(m) => Part::Mesh(&m.tree),
+                        })
+                    })
+                    .collect::<PyResult<Vec<_>>>()?;
+                Prepared::Compound(Compound::try_new(parts).map_err(input)?)
+            }
+        })
+    }
+
+    fn kind_name(&self) -> &'static str {
+        match &self.data {
+            Data::Convex { primitive, .. } => match primitive {
+                Primitive::Ball(_) => "ball",
+                Primitive::Capsule(..) => "capsule",
+                Primitive::Cuboid(_) => "box",
+                Primitive::Cylinder(..) => "cylinder",
+                Primitive::Cone(..) => "cone",
+            },
+            Data::Hull(_) => "convex_hull",
+            Data::Mesh(_) => "mesh",
+            Data::HalfSpace { .. } => "half_space",
+            Data::Compound { .. } => "compound",
+        }
+    }
+}
+
+fn rows_to_numpy<'py>(py: Python<'py>, rows: &[[f64; 3]]) -> PyResult<Bound<'py, PyAny>> {
+    to_numpy(py, rows.concat(), &[rows.len(), 3])
+}
+
+#[pymethods]
+impl Body {
+    /// The kind: "mesh", "ball", "capsule", "box", "cylinder", "cone",
+    /// "convex_hull", "half_space" or "compound".
+    #[getter]
+    fn kind(&self) -> &'static str {
+        self.kind_name()
+    }
+
+    /// A mesh's vertices as an `(n, 3)` array (`None` for other kinds).
+    #[getter]
+    fn vertices<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        match &self.data {
+            Data::Mesh(m) => Ok(Some(rows_to_numpy(py, m.mesh.vertices())?)),
+            Data::Hull(h) => Ok(Some(rows_to_numpy(py, &h.points)?)),
+            _ => Ok(None),
+        }
+    }
+
+    /// A mesh's triangles as an `(m, 3)` array of indices (`None` for other
+    /// kinds).
+    #[getter]
+    fn faces<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        match &self.data {
+            Data::Mesh(m) => {
+                let f = m.mesh.triangles();
+                let flat: Vec<i64> = f.iter().flatten().map(|&i| i64::from(i)).collect();
+                let arr = numpy::PyArray1::from_vec(py, flat);
+                use numpy::PyArrayMethods;
+                Ok(Some(arr.reshape(vec![f.len(), 3])?.into_any()))
+            }
+            _ => Ok(None),
+        }
+    }
+
+    /// An upper bound of every point's distance from the body's origin
+    /// (`inf` for a half-space).
+    #[getter]
+    fn reach(&self) -> PyResult<f64> {
+        Ok(match self.prepare()? {
+            Prepared::Convex(c) => c.reach(),
+            Prepared::Mesh(t) => t.root_ball().centre_norm_up() + t.root_ball().radius(),
+            Prepared::HalfSpace(_) => f64::INFINITY,
+            Prepared::Compound(c) => c.reach(),
+        })
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
+        let py = slf.py();
+        let module = py.import("motion_bound")?;
+        let this = slf.get();
+        let f = module.getattr(this.kind_name())?;
+        let float = |x: f64| -> PyResult<Bound<'py, PyAny>> { Ok(x.into_pyobject(py)?.into_any()) };
+        let args: Vec<Bound<'py, PyAny>> = match &this.data {
+            Data::Convex {
+                primitive,
+                rounding,
+                ..
+            } => match *primitive {
+                Primitive::Ball(r) => vec![float(r)?],
+                Primitive::Capsule(h, r) => vec![float(h)?, float(r)?],
+                Primitive::Cuboid(h) => vec![to_numpy(py, h.to_vec(), &[3])?, float(*rounding)?],
+                Primitive::Cylinder(h, r) | Primitive::Cone(h, r) => {
+                    vec![float(h)?, float(r)?, float(*rounding)?]
+                }
+            },
+            Data::Hull(h) => vec![rows_to_numpy(py, &h.points)?, float(h.rounding)?],
+            Data::Mesh(_) => {
+                let b = slf.as_any();
+                vec![b.getattr("vertices")?, b.getattr("faces")?]
+            }
+            Data::HalfSpace { normal, .. } => vec![to_numpy(py, normal.to_vec(), &[3])?],
+            Data::Compound { given, .. } => {
+                let items = given
+                    .iter()
+                    .map(|(b, p)| {
+                        let pose = Bound::new(py, p.clone())?.into_any();
+                        Ok(PyTuple::new(py, [b.bind(py).clone().into_any(), pose])?.into_any())
+                    })
+                    .collect::<PyResult<Vec<_>>>()?;
+                vec![PyList::new(py, items)?.into_any()]
+            }
+        };
+        PyTuple::new(py, [f, PyTuple::new(py, args)?.into_any()])
+    }
+
+    fn __repr__(&self) -> String {
+        match &self.data {
+            Data::Convex {
+                primitive,
+                rounding,
+                ..
+            } => {
+                let r = if *rounding == 0.0 {
+                    String::new()
+                } else {
+                    format!(", rounding={rounding}")
+                };
+                match primitive {
+                    Primitive::Ball(x) => format!("ball({x})"),
+                    Primitive::Capsule(h, x) => format!("capsule({h}, {x})"),
+                    Primitive::Cuboid(h) => format!("box({:?}{r})", h),
+                    Primitive::Cylinder(h, x) => format!("cylinder({h}, {x}{r})"),
+                    Primitive::Cone(h, x) => format!("cone({h}, {x}{r})"),
+                }
+            }
+            Data::Hull(h) => format!("convex_hull({} points)", h.points.len()),
+            Data::Mesh(m) => format!(
+                "mesh({} vertices, {} triangles)",
+                m.mesh.vertices().len(),
+                m.mesh.triangles().len()
+            ),
+            Data::HalfSpace { normal, .. } => format!("half_space({normal:?})"),
+            Data::Compound { given, .. } => format!("compound({} parts)", given.len()),
+        }
+    }
+}
+
+fn convex_body(primitive: Primitive, rounding: f64) -> PyResult<Body> {
+    Ok(Body {
+        data: Data::Convex {
+            primitive,
+            rounding,
+            convex: primitive_convex(primitive, rounding)?,
+        },
+    })
+}
+
+/// A triangle mesh from `vertices` (an `(n, 3)` array of real numbers) and
+/// `faces` (an `(m, 3)` array of integer indices into `vertices`). Its ball
+/// tree is built here, once; the mesh need not be closed or convex.
+///
+/// Raises `InputError` for NaN, infinite or out-of-range vertices,
+/// `MeshError` for an index out of range or no triangle, `ValueError` for a
+/// wrong shape, `TypeError` for a wrong dtype (float indices, say).
+#[pyfunction]
+fn mesh(vertices: &Bound<'_, PyAny>, faces: &Bound<'_, PyAny>) -> PyResult<Body> {
+    let v = rows3(vertices, "vertices")?;
+    let f = triangles(faces, "faces")?;
+    Ok(Body {
+        data: Data::Mesh(MeshData::new(v, f)?),
+    })
+}
+
+/// The body of a `trimesh.Trimesh` (its `vertices` and `faces`); trimesh is
+/// imported only by the caller.
+#[pyfunction]
+fn from_trimesh(mesh_obj: &Bound<'_, PyAny>) -> PyResult<Body> {
+    let (Ok(v), Ok(f)) = (mesh_obj.getattr("vertices"), mesh_obj.getattr("faces")) else {
+        return Err(PyTypeError::new_err(
+            "from_trimesh takes an object with `vertices` and `faces` (a trimesh.Trimesh)",
+        ));
+    };
+    mesh(&v, &f)
+}
+
+/// A ball of `radius` centred at the body origin.
+#[pyfunction]
+fn ball(radius: f64) -> PyResult<Body> {
+    convex_body(Primitive::Ball(radius), 0.0)
+}
+
+/// A capsule: the segment from `(0, -half_height, 0)` to
+/// `(0, half_height, 0)` rounded by `radius`.
+#[pyfunction]
+fn capsule(half_height: f64, radius: f64) -> PyResult<Body> {
+    convex_body(Primitive::Capsule(half_height, radius), 0.0)
+}
+
+/// The box `[-h0, h0] x [-h1, h1] x [-h2, h2]` of the half extents `h`,
+/// rounded by `rounding` (every point within `rounding` of the box).
+#[pyfunction]
+#[pyo3(name = "box", signature = (half_extents, rounding = 0.0))]
+fn cuboid(half_extents: &Bound<'_, PyAny>, rounding: f64) -> PyResult<Body> {
+    convex_body(
+        Primitive::Cuboid(vec3(half_extents, "half_extents")?),
+        rounding,
+    )
+}
+
+/// The cylinder along the body's `y` axis, `|y| <= half_height`, of radius
+/// `radius`, rounded by `rounding`.
+#[pyfunction]
+#[pyo3(signature = (half_height, radius, rounding = 0.0))]
+fn cylinder(half_height: f64, radius: f64, rounding: f64) -> PyResult<Body> {
+    convex_body(Primitive::Cylinder(half_height, radius), rounding)
+}
+
+/// The cone along the body's `y` axis, apex `(0, half_height, 0)`, base of
+/// radius `radius` at `y = -half_height`, rounded by `rounding`.
+#[pyfunction]
+#[pyo3(signature = (half_height, radius, rounding = 0.0))]
+fn cone(half_height: f64, radius: f64, rounding: f64) -> PyResult<Body> {
+    convex_body(Primitive::Cone(half_height, radius), rounding)
+}
+
+/// The convex hull of `points` (an `(n, 3)` array), rounded by `rounding`.
+#[pyfunction]
+#[pyo3(signature = (points, rounding = 0.0))]
+fn convex_hull(points: &Bound<'_, PyAny>, rounding: f64) -> PyResult<Body> {
+    Ok(Body {
+        data: Data::Hull(Hull::new(rows3(points, "points")?, rounding)?),
+    })
+}
+
+/// The half-space `{x : normal . x <= 0}` in the body frame (the ground for
+/// `normal = (0, 0, 1)` at the identity pose, say; the normal points out of
+/// the solid). It may translate but not turn.
+#[pyfunction]
+fn half_space(normal: &Bound<'_, PyAny>) -> PyResult<Body> {
+    let n = vec3(normal, "normal")?;
+    Ok(Body {
+        data: Data::HalfSpace {
+            normal: n,
+            half: HalfSpace::try_new(Vec3::from_array(n)).map_err(input)?,
+        },
+    })
+}
+
+fn transform_mesh(m: &TriMesh<f64>, at: &Isometry<f64>) -> PyResult<MeshData> {
+    let v = m
+        .vertices()
+        .iter()
+        .map(|p| {
+            at.transform_point(motion_bound::Point3::from_array(*p))
+                .to_array()
+        })
+        .collect();
+    MeshData::new(v, m.triangles().to_vec())
+}
+
+/// Several bodies moving as one: `parts` is a list of `(body, pose)` with
+/// each body's pose in the compound's frame (a 4x4 array or a `Pose`). Parts
+/// are meshes and convex shapes (not half-spaces or compounds).
+#[pyfunction]
+fn compound(parts: &Bound<'_, PyAny>) -> PyResult<Body> {
+    let py = parts.py();
+    let mut given = Vec::new();
+    let mut owned = Vec::new();
+    for item in parts.try_iter()? {
+        let item = item?;
+        let (body, pose): (Bound<'_, PyAny>, Bound<'_, PyAny>) = item
+            .extract()
+            .map_err(|_| PyTypeError::new_err("compound parts are (body, pose) pairs"))?;
+        let body: Bound<'_, Body> = body
+            .cast_into()
+            .map_err(|_| PyTypeError::new_err("a compound part must be a Body"))?;
+        let pose = pose_arg(&pose, "part pose")?;
+        let at = pose.iso;
+        let part = match &body.get().data {
+            Data::Convex { convex, .. } => OwnedPart::Convex(convex.try_placed(at).map_err(input)?),
+            Data::Hull(h) => OwnedPart::Hull(h.clone(), at),
+            Data::Mesh(m) => OwnedPart::Mesh(transform_mesh(&m.mesh, &at)?),
+            Data::HalfSpace { .. } | Data::Compound { .. } => {
+                return Err(PyValueError::new_err(
+                    "a compound's parts are meshes and convex shapes (no half-space, no compound)",
+                ))
+            }
+        };
+        owned.push(part);
+        given.push((body.unbind(), pose));
+    }
+    if owned.is_empty() {
+        return Err(input(motion_bound::InputError::EmptyCompound));
+    }
+    let _ = py;
+    let b = Body {
+        data: Data::Compound {
+            given,
+            parts: owned,
+        },
+    };
+    b.prepare()?; // validated once here
+    Ok(b)
+}
+
+pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<Body>()?;
+    m.add_function(wrap_pyfunction!(mesh, m)?)?;
+    m.add_function(wrap_pyfunction!(from_trimesh, m)?)?;
+    m.add_function(wrap_pyfunction!(ball, m)?)?;
+    m.add_function(wrap_pyfunction!(capsule, m)?)?;
+    m.add_function(wrap_pyfunction!(cuboid, m)?)?;
+    m.add_function(wrap_pyfunction!(cylinder, m)?)?;
+    m.add_function(wrap_pyfunction!(cone, m)?)?;
+    m.add_function(wrap_pyfunction!(convex_hull, m)?)?;
+    m.add_function(wrap_pyfunction!(half_space, m)?)?;
+    m.add_function(wrap_pyfunction!(compound, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,66 @@
+//! The exceptions: one base class, one subclass per kind of Rust error, each
+//! carrying the Rust error's message.
+
+use pyo3::create_exception;
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+
+create_exception!(
+    motion_bound,
+    MotionBoundError,
+    PyValueError,
+    "Base class of motion_bound's errors (a ValueError): bad input or parameters."
+);
+create_exception!(
+    motion_bound,
+    InputError,
+    MotionBoundError,
+    "A number the core refuses: NaN or infinite, beyond the input range, a zero direction or \
+     quaternion, a negative radius, a matrix that is not a rotation, an empty vertex set."
+);
+create_exception!(
+    motion_bound,
+    MeshError,
+    MotionBoundError,
+    "A triangle mesh the crate cannot use: no triangle, an index out of range, a degenerate mesh."
+);
+create_exception!(
+    motion_bound,
+    QueryError,
+    MotionBoundError,
+    "A query that cannot run: a parameter out of range, motions over different intervals, a \
+     turning half-space, two half-spaces, a scene body on another interval."
+);
+
+pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    let py = m.py();
+    m.add("MotionBoundError", py.get_type::<MotionBoundError>())?;
+    m.add("InputError", py.get_type::<InputError>())?;
+    m.add("MeshError", py.get_type::<MeshError>())?;
+    m.add("QueryError", py.get_type::<QueryError>())?;
+    Ok(())
+}
+
+/// The core's refusal of an input, as `InputError`.
+pub(crate) fn input(e: motion_bound::InputError) -> PyErr {
+    InputError::new_err(e.to_string())
+}
+
+/// A mesh's refusal, as `MeshError`.
+pub(crate) fn mesh(e: motion_bound::MeshError) -> PyErr {
+    MeshError::new_err(e.to_string())
+}
+
+/// A query's refusal, as `QueryError` (or `InputError` for the input it
+/// carries).
+pub(crate) fn query(e: motion_bound::ca::CaError) -> PyErr {
+    match e {
+        motion_bound::ca::CaError::Input(i) => input(i),
+        other => QueryError::new_err(other.to_string()),
+    }
+}
+
+/// A scene's refusal, as `QueryError`.
+pub(crate) fn scene(e: motion_bound::scene::SceneQueryError) -> PyErr {
+    QueryError::new_err(e.to_string())
+}

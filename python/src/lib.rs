@@ -1,0 +1,45 @@
+//! `motion_bound` for Python: certified continuous collision detection by
+//! conservative advancement, never late and never missed, for triangle
+//! meshes, convex shapes (balls, capsules, boxes, cylinders, cones, hulls,
+//! rounded or not), half-spaces and compounds, from numpy arrays.
+//!
+//! This crate is the binding only: every number comes from the Rust crate
+//! `motion-bound` (its proofs are in its `proofs/`). What the binding adds is
+//! the conversion of Python input (with typed exceptions for what is not
+//! understood), the release of the GIL during every query, the batch call on
+//! every core, and pickling.
+//!
+//! The Python-facing documentation is in the docstrings below (`help()`
+//! shows them), in `motion_bound.pyi` and in `python/README.md`.
+
+mod arrays;
+mod body;
+mod errors;
+mod motion;
+mod query;
+mod scene;
+mod testing;
+
+use pyo3::prelude::*;
+
+/// Certified continuous collision detection: the first time of contact of two
+/// moving bodies, never late and never missed (conservative advancement with
+/// proven motion bounds, the rounding of every step accounted for).
+///
+/// Bodies: `mesh`, `ball`, `capsule`, `box`, `cylinder`, `cone`,
+/// `convex_hull`, `half_space`, `compound`, `from_trimesh`.
+/// Poses: `Pose` (a 4x4 matrix, or a quaternion and a translation).
+/// Motions: `Motion.between(start, end)`, `Motion(start, linear, angular)`,
+/// `MotionBatch` for many.
+/// Queries: `time_of_impact`, `time_of_impact_batch`, `Scene`.
+#[pymodule]
+fn motion_bound(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    errors::register(m)?;
+    body::register(m)?;
+    motion::register(m)?;
+    query::register(m)?;
+    scene::register(m)?;
+    testing::register(m)?;
+    Ok(())
+}

@@ -1,0 +1,565 @@
+//! Pair queries: `time_of_impact` and its batch form, with the GIL released
+//! while they run.
+
+use motion_bound::ca::{
+    time_of_impact as toi, AnyPair, CaOutcome, CaParams, CaReport, MeshWorkspace,
+};
+use motion_bound::RigidMotion;
+use pyo3::exceptions::{PyIndexError, PyTypeError, PyValueError};
+use pyo3::prelude::*;
+use pyo3::types::PyTuple;
+use rayon::prelude::*;
+
+use crate::arrays::{floats, to_numpy};
+use crate::body::Body;
+use crate::errors::query;
+use crate::motion::{Motion, MotionBatch};
+
+/// The outcomes, by code (`BatchReport.outcome_codes`).
+const OUTCOMES: [&str; 6] = [
+    "contact",
+    "initial_contact",
+    "separated",
+    "iteration_limit",
+    "work_limit",
+    "precision_limit",
+];
+
+/// One query's answer, flat.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Flat {
+    code: u8,
+    time: f64,
+    on_a: [f64; 3],
+    on_b: [f64; 3],
+    normal: [f64; 3],
+    distance: f64,
+    iterations: u32,
+}
+
+const NAN3: [f64; 3] = [f64::NAN; 3];
+
+impl Flat {
+    pub(crate) fn of(report: &CaReport<f64>) -> Self {
+        let mut f = Self {
+            code: 2,
+            time: f64::NAN,
+            on_a: NAN3,
+            on_b: NAN3,
+            normal: NAN3,
+            distance: f64::NAN,
+            iterations: report.iterations,
+        };
+        let contact = match report.outcome {
+            CaOutcome::Contact { contact, .. } => {
+                f.code = 0;
+                Some(contact)
+            }
+            CaOutcome::InitialContact(contact) => {
+                f.code = 1;
+                Some(contact)
+            }
+            CaOutcome::Separated => None,
+            CaOutcome::IterationLimit { time } => {
+                f.code = 3;
+                f.time = time;
+                None
+            }
+            CaOutcome::WorkLimit { time } => {
+                f.code = 4;
+                f.time = time;
+                None
+            }
+            CaOutcome::PrecisionLimit { time, .. } => {
+                f.code = 5;
+                f.time = time;
+                None
+            }
+            // A future outcome: reported as undecided from the start.
+            _ => {
+                f.code = 3;
+                f.time = 0.0;
+                None
+            }
+        };
+        if let Some(c) = contact {
+            f.time = c.time;
+            if let Some(w) = c.witness {
+                f.on_a = w.on_a.to_array();
+                f.on_b = w.on_b.to_array();
+                f.distance = w.distance;
+            }
+            if let Some(n) = c.normal {
+                f.normal = n.to_array();
+            }
+        }
+        f
+    }
+}
+
+fn opt3(x: [f64; 3]) -> Option<[f64; 3]> {
+    if x[0].is_nan() {
+        None
+    } else {
+        Some(x)
+    }
+}
+
+/// One query's answer.
+///
+/// `outcome` is one of "contact" (first contact at `time`),
+/// "initial_contact" (within the contact distance at `t = 0`), "separated"
+/// (certified: no contact over the whole interval), or, when the query could
+/// not decide, "iteration_limit", "work_limit" or "precision_limit" (no
+/// contact before `time`, certified; treat it as a possible contact at
+/// `time`). `hit` is true for every outcome but "separated". For a contact:
+/// `point_a`, `point_b` (the closest points at `time`, world frame),
+/// `normal` (unit, from A to B, when the points differ) and `distance`.
+#[pyclass(frozen, module = "motion_bound")]
+#[derive(Clone, Debug)]
+pub struct Report {
+    pub(crate) flat: Flat,
+}
+
+#[pymethods]
+impl Report {
+    /// Rebuilds a report from its fields (what pickling does).
+    #[new]
+    #[pyo3(signature = (outcome, time, point_a, point_b, normal, distance, iterations))]
+    fn py_new(
+        outcome: &str,
+        time: Option<f64>,
+        point_a: Option<[f64; 3]>,
+        point_b: Option<[f64; 3]>,
+        normal: Option<[f64; 3]>,
+        distance: Option<f64>,
+        iterations: u32,
+    ) -> PyResult<Self> {
+        let code = OUTCOMES
+            .iter()
+            .position(|o| *o == outcome)
+            .ok_or_else(|| PyValueError::new_err(format!("unknown outcome {outcome:?}")))?;
+        Ok(Self {
+            flat: Flat {
+                code: code as u8,
+                time: time.unwrap_or(f64::NAN),
+                on_a: point_a.unwrap_or(NAN3),
+                on_b: point_b.unwrap_or(NAN3),
+                normal: normal.unwrap_or(NAN3),
+                distance: distance.unwrap_or(f64::NAN),
+                iterations,
+            },
+        })
+    }
+
+    /// What ended the query.
+    #[getter]
+    fn outcome(&self) -> &'static str {
+        OUTCOMES[usize::from(self.flat.code)]
+    }
+
+    /// True unless the query certified that the bodies never touch.
+    #[getter]
+    fn hit(&self) -> bool {
+        self.flat.code != 2
+    }
+
+    /// The contact's time, or the safe time reached when undecided; `None`
+    /// when separated.
+    #[getter]
+    fn time(&self) -> Option<f64> {
+        (!self.flat.time.is_nan()).then_some(self.flat.time)
+    }
+
+    /// The closest point on A at the contact (world frame), or `None`.
+    #[getter]
+    fn point_a(&self) -> Option<[f64; 3]> {
+        opt3(self.flat.on_a)
+    }
+
+    /// The closest point on B at the contact (world frame), or `None`.
+    #[getter]
+    fn point_b(&self) -> Option<[f64; 3]> {
+        opt3(self.flat.on_b)
+    }
+
+    /// The unit normal from A to B at the contact, or `None`.
+    #[getter]
+    fn normal(&self) -> Option<[f64; 3]> {
+        opt3(self.flat.normal)
+    }
+
+    /// The distance between the witness points at the contact, or `None`.
+    #[getter]
+    fn distance(&self) -> Option<f64> {
+        (!self.flat.distance.is_nan()).then_some(self.flat.distance)
+    }
+
+    /// Conservative-advancement iterations.
+    #[getter]
+    fn iterations(&self) -> u32 {
+        self.flat.iterations
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
+        let py = slf.py();
+        let r = slf.get();
+        let args = (
+            r.outcome(),
+            r.time(),
+            r.point_a(),
+            r.point_b(),
+            r.normal(),
+            r.distance(),
+            r.iterations(),
+        )
+            .into_pyobject(py)?;
+        PyTuple::new(py, [py.get_type::<Self>().into_any(), args.into_any()])
+    }
+
+    fn __eq__(&self, other: &Self) -> bool {
+        let a = &self.flat;
+        let b = &other.flat;
+        let same = |x: f64, y: f64| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
+        let same3 = |x: [f64; 3], y: [f64; 3]| (0..3).all(|k| same(x[k], y[k]));
+        a.code == b.code
+            && same(a.time, b.time)
+            && same3(a.on_a, b.on_a)
+            && same3(a.on_b, b.on_b)
+            && same3(a.normal, b.normal)
+            && same(a.distance, b.distance)
+            && a.iterations == b.iterations
+    }
+
+    fn __repr__(&self) -> String {
+        match self.time() {
+            Some(t) => format!(
+                "Report(outcome={:?}, time={t}, iterations={})",
+                self.outcome(),
+                self.flat.iterations
+            ),
+            None => format!(
+                "Report(outcome={:?}, iterations={})",
+                self.outcome(),
+                self.flat.iterations
+            ),
+        }
+    }
+}
+
+/// The query parameters from the keyword arguments.
+pub(crate) fn params(
+    contact_distance: f64,
+    tolerance: f64,
+    max_iterations: u32,
+) -> PyResult<CaParams<f64>> {
+    let p = CaParams::default()
+        .with_contact_distance(contact_distance)
+        .with_time_tolerance(tolerance)
+        .with_max_iterations(max_iterations);
+    p.validate().map_err(query)?;
+    Ok(p)
+}
+
+/// One pair query (the pair's stepper made for it, its workspace reused).
+fn run(
+    a: &crate::body::Prepared<'_>,
+    b: &crate::body::Prepared<'_>,
+    ma: &RigidMotion<f64>,
+    mb: &RigidMotion<f64>,
+    p: &CaParams<f64>,
+    ws: &mut Option<MeshWorkspace<f64>>,
+) -> Result<Flat, motion_bound::ca::CaError> {
+    let mut pair =
+        AnyPair::try_new(a.shape(), b.shape())?.with_workspace(ws.take().unwrap_or_default());
+    let out = toi(&mut pair, ma, mb, p);
+    *ws = Some(pair.into_workspace());
+    Ok(Flat::of(&out?))
+}
+
+/// The first time of contact of body `a` moving by `motion_a` and body `b`
+/// moving by `motion_b` (motions over the same interval), or a certified
+/// "separated". Contact means a distance of at most `contact_distance`; the
+/// reported time is never later than the first time the distance falls to
+/// half of it (never later than touching), and a contact is never missed.
+/// `tolerance` is the time tolerance, `max_iterations` the iteration limit.
+/// The GIL is released while the query runs.
+///
+/// Raises `QueryError` for parameters out of range or motions over different
+/// intervals, a turning half-space or two half-spaces.
+#[pyfunction]
+#[pyo3(signature = (a, motion_a, b, motion_b, contact_distance = 1e-4, tolerance = 1e-9, max_iterations = 100))]
+#[allow(clippy::too_many_arguments)]
+fn time_of_impact(
+    py: Python<'_>,
+    a: &Bound<'_, Body>,
+    motion_a: &Bound<'_, Motion>,
+    b: &Bound<'_, Body>,
+    motion_b: &Bound<'_, Motion>,
+    contact_distance: f64,
+    tolerance: f64,
+    max_iterations: u32,
+) -> PyResult<Report> {
+    let p = params(contact_distance, tolerance, max_iterations)?;
+    let (ba, bb) = (a.get(), b.get());
+    let (ma, mb) = (motion_a.get().motion, motion_b.get().motion);
+    let flat = py.detach(|| -> PyResult<Flat> {
+        let (pa, pb) = (ba.prepare()?, bb.prepare()?);
+        run(&pa, &pb, &ma, &mb, &p, &mut None).map_err(query)
+    })?;
+    Ok(Report { flat })
+}
+
+/// Motions for a batch: one for every query, or one shared.
+enum Many<'a> {
+    One(&'a RigidMotion<f64>),
+    Each(&'a [RigidMotion<f64>]),
+}
+
+impl<'a> Many<'a> {
+    /// A `Motion` or a `MotionBatch`, borrowed (both are frozen).
+    fn of(obj: &'a Bound<'_, PyAny>, what: &str) -> PyResult<Self> {
+        if let Ok(m) = obj.cast::<Motion>() {
+            return Ok(Self::One(&m.get().motion));
+        }
+        if let Ok(b) = obj.cast::<MotionBatch>() {
+            return Ok(Self::Each(&b.get().motions));
+        }
+        Err(PyTypeError::new_err(format!(
+            "{what} must be a Motion or a MotionBatch"
+        )))
+    }
+
+    fn get(&self, i: usize) -> &RigidMotion<f64> {
+        match self {
+            Self::One(m) => m,
+            Self::Each(v) => &v[i],
+        }
+    }
+
+    fn len(&self) -> Option<usize> {
+        match self {
+            Self::One(_) => None,
+            Self::Each(v) => Some(v.len()),
+        }
+    }
+}
+
+/// Many queries of the same two bodies: `motions_a` and `motions_b` are each
+/// a `MotionBatch` (one motion per query, the same length) or a `Motion`
+/// (the same for every query). Runs on every core (rayon) with the GIL
+/// released; answers as a `BatchReport`, in query order, the same as one
+/// `time_of_impact` per query.
+#[pyfunction]
+#[pyo3(signature = (a, motions_a, b, motions_b, contact_distance = 1e-4, tolerance = 1e-9, max_iterations = 100, parallel = true))]
+#[allow(clippy::too_many_arguments)]
+fn time_of_impact_batch(
+    py: Python<'_>,
+    a: &Bound<'_, Body>,
+    motions_a: &Bound<'_, PyAny>,
+    b: &Bound<'_, Body>,
+    motions_b: &Bound<'_, PyAny>,
+    contact_distance: f64,
+    tolerance: f64,
+    max_iterations: u32,
+    parallel: bool,
+) -> PyResult<BatchReport> {
+    let p = params(contact_distance, tolerance, max_iterations)?;
+    let ma = Many::of(motions_a, "motions_a")?;
+    let mb = Many::of(motions_b, "motions_b")?;
+    let n = match (ma.len(), mb.len()) {
+        (Some(x), Some(y)) if x != y => {
+            return Err(PyValueError::new_err(format!(
+                "motions_a has {x} motions but motions_b has {y}"
+            )))
+        }
+        (Some(x), _) | (None, Some(x)) => x,
+        (None, None) => 1,
+    };
+    let (ba, bb) = (a.get(), b.get());
+    let flats = py.detach(|| -> PyResult<Vec<Flat>> {
+        let (pa, pb) = (ba.prepare()?, bb.prepare()?);
+        let one = |ws: &mut Option<MeshWorkspace<f64>>, i: usize| {
+            run(&pa, &pb, ma.get(i), mb.get(i), &p, ws)
+        };
+        let out: Result<Vec<Flat>, _> = if parallel {
+            (0..n).into_par_iter().map_init(|| None, one).collect()
+        } else {
+            let mut ws = None;
+            (0..n).map(|i| one(&mut ws, i)).collect()
+        };
+        out.map_err(query)
+    })?;
+    Ok(BatchReport { flats })
+}
+
+/// The answers of a batch, as arrays (one entry per query): `outcome_codes`
+/// (`uint8`, indices into `BatchReport.OUTCOMES`), `times` (NaN when
+/// separated), `points_a`, `points_b`, `normals` (`(n, 3)`, NaN rows when
+/// none), `distances`, `iterations`; `hits` (bool). `len(r)`, `r[i]` (a
+/// `Report`); it pickles.
+#[pyclass(frozen, module = "motion_bound")]
+#[derive(Debug)]
+pub struct BatchReport {
+    flats: Vec<Flat>,
+}
+
+#[pymethods]
+impl BatchReport {
+    /// The outcome names, by code.
+    #[classattr]
+    #[allow(non_snake_case)]
+    fn OUTCOMES() -> Vec<&'static str> {
+        OUTCOMES.to_vec()
+    }
+
+    /// Rebuilds a batch report from its arrays (what pickling does).
+    #[new]
+    fn py_new(
+        outcome_codes: &Bound<'_, PyAny>,
+        times: &Bound<'_, PyAny>,
+        points_a: &Bound<'_, PyAny>,
+        points_b: &Bound<'_, PyAny>,
+        normals: &Bound<'_, PyAny>,
+        distances: &Bound<'_, PyAny>,
+        iterations: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        let (codes, _) = floats(outcome_codes, "outcome_codes")?;
+        let (t, _) = floats(times, "times")?;
+        let pa = crate::arrays::rows3(points_a, "points_a")?;
+        let pb = crate::arrays::rows3(points_b, "points_b")?;
+        let nm = crate::arrays::rows3(normals, "normals")?;
+        let (d, _) = floats(distances, "distances")?;
+        let (it, _) = floats(iterations, "iterations")?;
+        let n = codes.len();
+        if [t.len(), pa.len(), pb.len(), nm.len(), d.len(), it.len()]
+            .iter()
+            .any(|&k| k != n)
+        {
+            return Err(PyValueError::new_err(
+                "the arrays must have one entry per query",
+            ));
+        }
+        let flats = (0..n)
+            .map(|i| Flat {
+                code: codes[i] as u8,
+                time: t[i],
+                on_a: pa[i],
+                on_b: pb[i],
+                normal: nm[i],
+                distance: d[i],
+                iterations: it[i] as u32,
+            })
+            .collect();
+        Ok(Self { flats })
+    }
+
+    fn __len__(&self) -> usize {
+        self.flats.len()
+    }
+
+    fn __getitem__(&self, i: isize) -> PyResult<Report> {
+        let n = self.flats.len() as isize;
+        let k = if i < 0 { i + n } else { i };
+        if k < 0 || k >= n {
+            return Err(PyIndexError::new_err("query index out of range"));
+        }
+        Ok(Report {
+            flat: self.flats[k as usize],
+        })
+    }
+
+    /// The outcome of each query as its code (`uint8`).
+    #[getter]
+    fn outcome_codes<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        let v: Vec<u8> = self.flats.iter().map(|f| f.code).collect();
+        numpy::PyArray1::from_vec(py, v).into_any()
+    }
+
+    /// True where the query did not certify separation.
+    #[getter]
+    fn hits<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        let v: Vec<bool> = self.flats.iter().map(|f| f.code != 2).collect();
+        numpy::PyArray1::from_vec(py, v).into_any()
+    }
+
+    /// Contact times (or the safe time reached when undecided); NaN when
+    /// separated.
+    #[getter]
+    fn times<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        to_numpy(
+            py,
+            self.flats.iter().map(|f| f.time).collect(),
+            &[self.flats.len()],
+        )
+    }
+
+    /// Witness points on A, `(n, 3)`.
+    #[getter]
+    fn points_a<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let v: Vec<f64> = self.flats.iter().flat_map(|f| f.on_a).collect();
+        to_numpy(py, v, &[self.flats.len(), 3])
+    }
+
+    /// Witness points on B, `(n, 3)`.
+    #[getter]
+    fn points_b<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let v: Vec<f64> = self.flats.iter().flat_map(|f| f.on_b).collect();
+        to_numpy(py, v, &[self.flats.len(), 3])
+    }
+
+    /// Normals from A to B, `(n, 3)`.
+    #[getter]
+    fn normals<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let v: Vec<f64> = self.flats.iter().flat_map(|f| f.normal).collect();
+        to_numpy(py, v, &[self.flats.len(), 3])
+    }
+
+    /// Witness distances.
+    #[getter]
+    fn distances<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        to_numpy(
+            py,
+            self.flats.iter().map(|f| f.distance).collect(),
+            &[self.flats.len()],
+        )
+    }
+
+    /// Iterations of each query.
+    #[getter]
+    fn iterations<'py>(&self, py: Python<'py>) -> Bound<'py, PyAny> {
+        let v: Vec<u32> = self.flats.iter().map(|f| f.iterations).collect();
+        numpy::PyArray1::from_vec(py, v).into_any()
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
+        let py = slf.py();
+        let r = slf.get();
+        let args = PyTuple::new(
+            py,
+            [
+                r.outcome_codes(py),
+                r.times(py)?,
+                r.points_a(py)?,
+                r.points_b(py)?,
+                r.normals(py)?,
+                r.distances(py)?,
+                r.iterations(py),
+            ],
+        )?;
+        PyTuple::new(py, [py.get_type::<Self>().into_any(), args.into_any()])
+    }
+
+    fn __repr__(&self) -> String {
+        let hits = self.flats.iter().filter(|f| f.code != 2).count();
+        format!("BatchReport({} queries, {hits} hits)", self.flats.len())
+    }
+}
+
+pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<Report>()?;
+    m.add_class::<BatchReport>()?;
+    m.add_function(wrap_pyfunction!(time_of_impact, m)?)?;
+    m.add_function(wrap_pyfunction!(time_of_impact_batch, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,164 @@
+//! `Scene`: many bodies over one interval, every pair's first contact after
+//! the crate's certified broad phase.
+
+use motion_bound::scene::{Scene as RustScene, SceneParams, SceneWorkspace};
+use motion_bound::TimeInterval;
+use pyo3::exceptions::PyTypeError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::body::Body;
+use crate::errors::{input, scene as scene_err};
+use crate::motion::{pose_arg, Motion};
+use crate::query::{params, Flat, Report};
+
+/// Many bodies moving over `[0, duration]`: `add(body, motion)` (a `Motion`
+/// over the same duration, or a pose for a still body) returns the body's
+/// number; `query(...)` returns every pair's first contact, as a list of
+/// `(i, j, Report)` with `i < j`, for the pairs the broad phase could not
+/// rule out (a pair not listed provably stays apart), and fills `stats`
+/// (what the broad phase skipped, each skip counted). The GIL is released
+/// during the query; `parallel=True` runs the pairs on every core.
+#[pyclass(module = "motion_bound")]
+pub struct Scene {
+    duration: f64,
+    bodies: Vec<(Py<Body>, Motion)>,
+    stats: Option<motion_bound::scene::SceneStats>,
+}
+
+#[pymethods]
+impl Scene {
+    #[new]
+    #[pyo3(signature = (duration = 1.0))]
+    fn py_new(duration: f64) -> PyResult<Self> {
+        // As a motion's duration: finite and positive.
+        let origin = motion_bound::Isometry::try_from_translation(motion_bound::Vec3::ZERO)
+            .map_err(input)?;
+        motion_bound::RigidMotion::try_from_start(
+            origin,
+            motion_bound::Vec3::ZERO,
+            motion_bound::Vec3::ZERO,
+            duration,
+        )
+        .map_err(input)?;
+        Ok(Self {
+            duration,
+            bodies: Vec::new(),
+            stats: None,
+        })
+    }
+
+    /// Adds `body` moving by `motion` (a `Motion`, or a pose for a body that
+    /// stays still); returns its number.
+    fn add(&mut self, body: Bound<'_, Body>, motion: &Bound<'_, PyAny>) -> PyResult<usize> {
+        let m = if let Ok(m) = motion.extract::<PyRef<'_, Motion>>() {
+            m.clone()
+        } else {
+            let pose = pose_arg(motion, "motion").map_err(|_| {
+                PyTypeError::new_err("motion must be a Motion, a Pose or a 4x4 array")
+            })?;
+            Motion::from_source(crate::motion::MotionSource::Velocities {
+                start: pose.source,
+                linear: [0.0; 3],
+                angular: [0.0; 3],
+                duration: self.duration,
+            })?
+        };
+        let i = m.motion.interval();
+        if i.start() != 0.0 || i.end() != self.duration {
+            return Err(scene_err(
+                motion_bound::scene::SceneQueryError::IntervalMismatch {
+                    body: self.bodies.len(),
+                },
+            ));
+        }
+        self.bodies.push((body.unbind(), m));
+        Ok(self.bodies.len() - 1)
+    }
+
+    fn __len__(&self) -> usize {
+        self.bodies.len()
+    }
+
+    /// Every pair's first contact: a list of `(i, j, Report)`.
+    #[pyo3(signature = (contact_distance = 1e-4, tolerance = 1e-9, max_iterations = 100, parallel = false))]
+    fn query(
+        &mut self,
+        py: Python<'_>,
+        contact_distance: f64,
+        tolerance: f64,
+        max_iterations: u32,
+        parallel: bool,
+    ) -> PyResult<Vec<(usize, usize, Report)>> {
+        let p =
+            SceneParams::default().with_ca(params(contact_distance, tolerance, max_iterations)?);
+        let bodies: Vec<(&Body, motion_bound::RigidMotion<f64>)> = self
+            .bodies
+            .iter()
+            .map(|(b, m)| (b.get(), m.motion))
+            .collect();
+        let duration = self.duration;
+        let (pairs, stats) = py.detach(|| -> PyResult<_> {
+            let prepared = bodies
+                .iter()
+                .map(|(b, _)| b.prepare())
+                .collect::<PyResult<Vec<_>>>()?;
+            let interval = TimeInterval::try_new(0.0, duration).map_err(input)?;
+            let mut scene = RustScene::try_new(interval).map_err(scene_err)?;
+            for (prep, (_, motion)) in prepared.iter().zip(&bodies) {
+                scene
+                    .try_add(prep.body_shape(), *motion)
+                    .map_err(scene_err)?;
+            }
+            let mut ws = SceneWorkspace::new();
+            let report = if parallel {
+                scene.par_query(&mut ws, &p)
+            } else {
+                scene.query(&mut ws, &p)
+            }
+            .map_err(scene_err)?;
+            let pairs: Vec<(usize, usize, Flat)> = report
+                .pairs()
+                .iter()
+                .map(|r| (r.a, r.b, Flat::of(&r.report)))
+                .collect();
+            Ok((pairs, report.stats()))
+        })?;
+        self.stats = Some(stats);
+        Ok(pairs
+            .into_iter()
+            .map(|(a, b, flat)| (a, b, Report { flat }))
+            .collect())
+    }
+
+    /// The last query's counters (bodies, pairs culled by the broad phase,
+    /// pairs tested, iterations, ...), or `None` before the first query.
+    #[getter]
+    fn stats<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyDict>>> {
+        let Some(s) = self.stats else {
+            return Ok(None);
+        };
+        let d = PyDict::new(py);
+        d.set_item("bodies", s.bodies)?;
+        d.set_item("static_bodies", s.static_bodies)?;
+        d.set_item("pairs_all", s.pairs_all)?;
+        d.set_item("pairs_static", s.pairs_static)?;
+        d.set_item("pairs_culled", s.pairs_culled)?;
+        d.set_item("pairs_tested", s.pairs_tested)?;
+        d.set_item("iterations", s.iterations)?;
+        Ok(Some(d))
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "Scene({} bodies, duration={})",
+            self.bodies.len(),
+            self.duration
+        )
+    }
+}
+
+pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add_class::<Scene>()?;
+    Ok(())
+}
