@@ -24,16 +24,11 @@ import motion_bound as mb
 sys.path.insert(0, str(pathlib.Path(__file__).parent))
 from meshes import load_bunny  # noqa: E402
 
+sys.path.insert(0, str(pathlib.Path(__file__).parents[1] / "tests"))
+from truth import random_rotation  # noqa: E402
+
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 CONTACT_DISTANCE = 1e-3
-
-
-def rotation(rng):
-    q = rng.normal(size=4)
-    w, x, y, z = q / np.linalg.norm(q)
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
 
 
 def motions(n, reach, seed):
@@ -44,7 +39,7 @@ def motions(n, reach, seed):
     for i in range(n):
         d = rng.normal(size=3)
         a = rng.normal(size=3)
-        starts[i, :3, :3] = rotation(rng)
+        starts[i, :3, :3] = random_rotation(rng)
         starts[i, :3, 3] = d / np.linalg.norm(d) * 2 * reach * rng.uniform(1.1, 1.6)
         ends[i, :3, 3] = a / np.linalg.norm(a) * 2 * reach * 0.8 * rng.uniform()
         axis = rng.normal(size=3)

@@ -115,7 +115,8 @@ HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "tests"))
 from meshes import load_bunny  # noqa: E402
-from truth import FclBody, Trajectory, distance, first_time_within, rodrigues  # noqa: E402
+from truth import (FclBody, Trajectory, distance, first_time_within, homogeneous,  # noqa: E402
+                   log_rotation, random_rotation, rodrigues)
 
 RESOLUTION = 1e-6  # the truth's time resolution (truth.first_time_within's default)
 FCL_CA_STEP = 1e-5  # FCL's fixed stopping step in mesh conservative advancement (t_err)
@@ -131,18 +132,9 @@ CA = SOLVER.CCDC_CONSERVATIVE_ADVANCEMENT
 
 def _axis_angle(r):
     """Eigen's AngleAxis of a rotation matrix: (unit axis, angle in [0, pi])."""
-    c = max(-1.0, min(1.0, (np.trace(r) - 1.0) / 2.0))
-    angle = math.acos(c)
-    if angle < 1e-12:
-        return np.array([1.0, 0.0, 0.0]), 0.0
-    if angle > math.pi - 1e-6:
-        m = (r + np.eye(3)) / 2.0
-        k = np.sqrt(np.maximum(np.diag(m), 0.0))
-        i = int(np.argmax(k))
-        k = m[i] / k[i]
-        return k / np.linalg.norm(k), angle
-    w = np.array([r[2, 1] - r[1, 2], r[0, 2] - r[2, 0], r[1, 0] - r[0, 1]])
-    return w / np.linalg.norm(w), angle
+    w = log_rotation(r)
+    angle = float(np.linalg.norm(w))
+    return (w / angle, angle) if angle > 0.0 else (np.array([1.0, 0.0, 0.0]), 0.0)
 
 
 class ScrewTrajectory:
@@ -192,12 +184,6 @@ def translation_only(traj):
 # -- scenes ------------------------------------------------------------------------------------
 
 
-def homogeneous(r, p):
-    m = np.eye(4)
-    m[:3, :3], m[:3, 3] = r, p
-    return m
-
-
 class FlyBy:
     """One query: mesh i moving by (start_a, v_a, w_a) and mesh j by (start_b, v_b, w_b)."""
 
@@ -219,14 +205,6 @@ def knot_scene(queries):
         flybys.append(FlyBy(i, j, *a, *b, motion_a=ma, motion_b=mb_))
     return {"name": "torus knots 2.8K (Table 1)", "meshes": s["meshes"], "flybys": flybys,
             "contact_distance": s["contact_distance"]}
-
-
-def random_rotation(rng):
-    q = rng.normal(size=4)
-    w, x, y, z = q / np.linalg.norm(q)
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
 
 
 def unit(rng):

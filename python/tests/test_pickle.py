@@ -6,7 +6,8 @@ import pickle
 import numpy as np
 
 import motion_bound as mb
-from test_truth import icosphere, pose, random_rotation
+from test_truth import icosphere
+from truth import homogeneous as pose, random_rotation
 
 
 def roundtrip(x):

@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 
 import motion_bound as mb
-from truth import FclBody, Trajectory, distance, first_time_within
+from truth import FclBody, Trajectory, distance, first_time_within, random_rotation
+from truth import homogeneous as pose
 
 RESOLUTION = 1e-6
 
@@ -44,21 +45,6 @@ def icosphere(radius, subdivisions=1):
              ([a, m(a, b), m(c, a)], [b, m(b, c), m(a, b)], [c, m(c, a), m(b, c)],
               [m(a, b), m(b, c), m(c, a)])]
     return np.array(v) * radius, np.array(f)
-
-
-def random_rotation(rng):
-    q = rng.normal(size=4)
-    q /= np.linalg.norm(q)
-    w, x, y, z = q
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
-
-
-def pose(rotation, translation):
-    m = np.eye(4)
-    m[:3, :3], m[:3, 3] = rotation, translation
-    return m
 
 
 def fly_by(rng, reach, spin):
