@@ -150,3 +150,31 @@ pub(crate) fn to_numpy<'py>(
     let flat = numpy::PyArray1::from_vec(py, values);
     Ok(flat.reshape(shape.to_vec())?.into_any())
 }
+
+/// The position of Python index `i` (negative from the end) in a sequence of
+/// `n`, or `IndexError` naming `what`.
+pub(crate) fn index(i: isize, n: usize, what: &str) -> PyResult<usize> {
+    let n = n as isize;
+    let k = if i < 0 { i + n } else { i };
+    if (0..n).contains(&k) {
+        Ok(k as usize)
+    } else {
+        Err(pyo3::exceptions::PyIndexError::new_err(format!(
+            "{what} index out of range"
+        )))
+    }
+}
+
+/// The row-major 4x4 homogeneous matrix of a rotation matrix and a
+/// translation, as a numpy array.
+pub(crate) fn homogeneous<'py>(
+    py: Python<'py>,
+    r: [[f64; 3]; 3],
+    t: [f64; 3],
+) -> PyResult<Bound<'py, PyAny>> {
+    let m = vec![
+        r[0][0], r[0][1], r[0][2], t[0], r[1][0], r[1][1], r[1][2], t[1], r[2][0], r[2][1],
+        r[2][2], t[2], 0.0, 0.0, 0.0, 1.0,
+    ];
+    to_numpy(py, m, &[4, 4])
+}

@@ -7,7 +7,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 
-use crate::arrays::{matrices4, matrix4, rows3, to_numpy, vec3, vec4};
+use crate::arrays::{homogeneous, index, matrices4, matrix4, rows3, to_numpy, vec3, vec4};
 use crate::errors::input;
 
 /// How far the last row of a 4x4 pose may be from `(0, 0, 0, 1)`.
@@ -140,13 +140,11 @@ impl Pose {
     /// The 4x4 homogeneous matrix of the pose as the crate uses it.
     #[getter]
     fn matrix<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let r = self.iso.rotation().matrix();
-        let t = self.iso.translation();
-        let m = vec![
-            r[0][0], r[0][1], r[0][2], t.x, r[1][0], r[1][1], r[1][2], t.y, r[2][0], r[2][1],
-            r[2][2], t.z, 0.0, 0.0, 0.0, 1.0,
-        ];
-        to_numpy(py, m, &[4, 4])
+        homogeneous(
+            py,
+            self.iso.rotation().matrix(),
+            self.iso.translation().to_array(),
+        )
     }
 
     /// The unit quaternion `(w, x, y, z)`.
@@ -323,13 +321,7 @@ impl Motion {
     /// The pose at time `t` as a 4x4 matrix.
     fn matrix_at<'py>(&self, py: Python<'py>, t: f64) -> PyResult<Bound<'py, PyAny>> {
         let p = self.motion.pose_at(t);
-        let r = p.rotation;
-        let x = p.translation;
-        let m = vec![
-            r[0][0], r[0][1], r[0][2], x.x, r[1][0], r[1][1], r[1][2], x.y, r[2][0], r[2][1],
-            r[2][2], x.z, 0.0, 0.0, 0.0, 1.0,
-        ];
-        to_numpy(py, m, &[4, 4])
+        homogeneous(py, p.rotation, p.translation.to_array())
     }
 
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
@@ -517,14 +509,7 @@ impl MotionBatch {
     }
 
     fn __getitem__(&self, i: isize) -> PyResult<Motion> {
-        let n = self.motions.len() as isize;
-        let k = if i < 0 { i + n } else { i };
-        if k < 0 || k >= n {
-            return Err(pyo3::exceptions::PyIndexError::new_err(
-                "motion index out of range",
-            ));
-        }
-        let k = k as usize;
+        let k = index(i, self.motions.len(), "motion")?;
         let source = match &self.source {
             BatchSource::Between {
                 starts,

@@ -5,12 +5,12 @@ use motion_bound::ca::{
     time_of_impact as toi, AnyPair, CaOutcome, CaParams, CaReport, MeshWorkspace,
 };
 use motion_bound::RigidMotion;
-use pyo3::exceptions::{PyIndexError, PyTypeError, PyValueError};
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 use rayon::prelude::*;
 
-use crate::arrays::{floats, to_numpy};
+use crate::arrays::{floats, index, to_numpy};
 use crate::body::Body;
 use crate::errors::query;
 use crate::motion::{Motion, MotionBatch};
@@ -459,13 +459,8 @@ impl BatchReport {
     }
 
     fn __getitem__(&self, i: isize) -> PyResult<Report> {
-        let n = self.flats.len() as isize;
-        let k = if i < 0 { i + n } else { i };
-        if k < 0 || k >= n {
-            return Err(PyIndexError::new_err("query index out of range"));
-        }
         Ok(Report {
-            flat: self.flats[k as usize],
+            flat: self.flats[index(i, self.flats.len(), "query")?],
         })
     }
 

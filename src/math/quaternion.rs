@@ -366,7 +366,15 @@ mod tests {
             Vec3::new(-0.3, 0.2, 0.9),
         ];
         // Angles near 0 and pi take the trace branch and the diagonal ones.
-        let angles = [0.0, 1e-12, 0.4, 2.0, 3.0, core::f64::consts::PI, 3.1415];
+        let angles = [
+            0.0,
+            1e-12,
+            0.4,
+            2.0,
+            3.0,
+            core::f64::consts::PI,
+            core::f64::consts::PI - 1e-4,
+        ];
         let probes = [Vec3::new(0.3, 1.2, -0.7), Vec3::new(-2.0, 0.1, 0.4)];
         for axis in axes {
             let k = axis.try_normalize().expect("nonzero");
