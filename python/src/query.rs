@@ -432,6 +432,23 @@ impl BatchReport {
         let (d, _) = floats(distances, "distances")?;
         let (it, _) = floats(iterations, "iterations")?;
         let n = codes.len();
+        if let Some(bad) = codes
+            .iter()
+            .find(|&&c| !(c >= 0.0 && c < OUTCOMES.len() as f64 && c.fract() == 0.0))
+        {
+            return Err(PyValueError::new_err(format!(
+                "outcome code {bad} is not one of 0..{}",
+                OUTCOMES.len()
+            )));
+        }
+        if let Some(bad) = it
+            .iter()
+            .find(|&&k| !(k >= 0.0 && k <= f64::from(u32::MAX) && k.fract() == 0.0))
+        {
+            return Err(PyValueError::new_err(format!(
+                "iteration count {bad} is not a u32"
+            )));
+        }
         if [t.len(), pa.len(), pb.len(), nm.len(), d.len(), it.len()]
             .iter()
             .any(|&k| k != n)

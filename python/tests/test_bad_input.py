@@ -140,3 +140,15 @@ def test_bad_queries():
         n3[3]
     with pytest.raises(mb.QueryError):
         mb.Scene().add(ball, mb.Motion.still(np.eye(4), duration=2.0))
+
+
+def test_reports_rebuilt_from_bad_fields_are_refused():
+    ok = ([0], [0.5], [[0, 0, 0]], [[0, 0, 0]], [[1, 0, 0]], [0.0], [3])
+    assert mb.BatchReport(*ok)[0].outcome == "contact"
+    for k, bad in ((0, [6]), (0, [-1]), (0, [1.5]), (6, [-2]), (6, [2.0**40])):
+        args = list(ok)
+        args[k] = bad
+        with pytest.raises(ValueError):
+            mb.BatchReport(*args)
+    with pytest.raises(ValueError, match="unknown outcome"):
+        mb.Report("hit", 0.5, None, None, None, None, 1)
