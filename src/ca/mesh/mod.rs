@@ -244,7 +244,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             NodeStep::Near(-T::INFINITY)
         };
         self.ws.enqueue(Pending::new(root, (0, 0), (0, 1)));
-        while let Some(Queued { slot, .. }) = self.ws.heap.pop() {
+        while let Some(Queued { slot, .. }) = self.ws.pop() {
             let Pending {
                 near,
                 key,
@@ -265,7 +265,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             } else if !near && key >= best * self.accept {
                 // Best-first: every pair left has a step at least `key`, so
                 // `min(best, key)` is safe for the whole meshes.
-                self.stats.pruned += self.ws.heap.len() as u64 + 1;
+                self.stats.pruned += self.ws.len() as u64 + 1;
                 best = best.min_nan(key);
                 break;
             }

@@ -38,7 +38,12 @@ use crate::Float;
 /// ```
 #[derive(Debug)]
 pub struct MeshWorkspace<T> {
-    pub(super) heap: BinaryHeap<Queued>,
+    heap: BinaryHeap<Queued>,
+    /// The best entry queued since the last pop, held out of the heap: a
+    /// pair's better child is usually popped next, and holding it spares the
+    /// heap a push and a pop (`pop` takes whichever of it and the heap's top
+    /// comes first in the queue's order, so the order is the heap's own).
+    held: Option<Queued>,
     /// The node pairs behind the queue's entries, indexed from [`Queued`].
     pub(super) pending: Vec<Pending>,
     /// The nodes placed at the current step, indexed from [`Pending`].
@@ -51,6 +56,7 @@ impl<T: Float> MeshWorkspace<T> {
     pub const fn new() -> Self {
         Self {
             heap: BinaryHeap::new(),
+            held: None,
             pending: Vec::new(),
             placed: Vec::new(),
         }
@@ -59,6 +65,7 @@ impl<T: Float> MeshWorkspace<T> {
     /// Clears the queue for a new step (keeping the buffers).
     pub(super) fn clear(&mut self) {
         self.heap.clear();
+        self.held = None;
         self.pending.clear();
         self.placed.clear();
     }
@@ -67,12 +74,41 @@ impl<T: Float> MeshWorkspace<T> {
     #[inline]
     pub(super) fn enqueue(&mut self, pair: Pending) {
         let slot = self.pending.len() as u32;
-        self.heap.push(Queued {
+        let entry = Queued {
             near: pair.near,
             key: pair.key,
             slot,
-        });
+        };
         self.pending.push(pair);
+        match self.held {
+            Some(held) if held > entry => self.heap.push(entry),
+            Some(held) => {
+                self.heap.push(held);
+                self.held = Some(entry);
+            }
+            None => self.held = Some(entry),
+        }
+    }
+
+    /// Takes the first entry in the queue's order (`Queued`'s `Ord`, a total
+    /// order: the same entry a heap of every queued pair would pop).
+    #[inline]
+    pub(super) fn pop(&mut self) -> Option<Queued> {
+        let Some(held) = self.held.take() else {
+            return self.heap.pop();
+        };
+        match self.heap.peek_mut() {
+            // The heap's top comes first: it leaves, the held entry takes its
+            // place (one sift instead of a push and a pop).
+            Some(mut top) if *top > held => Some(core::mem::replace(&mut *top, held)),
+            _ => Some(held),
+        }
+    }
+
+    /// How many entries are queued.
+    #[inline]
+    pub(super) fn len(&self) -> usize {
+        self.heap.len() + usize::from(self.held.is_some())
     }
 }
 

@@ -195,7 +195,7 @@ impl<T: Float> CaStep<T> for MeshShapePair<'_, T> {
             NodeStep::Near(-T::INFINITY)
         };
         self.ws.enqueue(Pending::new(root, (0, 0), (0, 0)));
-        while let Some(Queued { slot, .. }) = self.ws.heap.pop() {
+        while let Some(Queued { slot, .. }) = self.ws.pop() {
             let Pending {
                 near, key, i, at, ..
             } = self.ws.pending[slot as usize];
@@ -205,7 +205,7 @@ impl<T: Float> CaStep<T> for MeshShapePair<'_, T> {
                     break;
                 }
             } else if !near && key >= best {
-                self.stats.pruned += self.ws.heap.len() as u64 + 1;
+                self.stats.pruned += self.ws.len() as u64 + 1;
                 best = best.min_nan(key);
                 break;
             }

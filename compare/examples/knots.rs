@@ -1,0 +1,115 @@
+//! The Table 1 torus-knot queries with EVQ alone, for comparing two builds of
+//! the crate: time per query and instruction counts.
+//!
+//! ```sh
+//! cargo run --release -p motion-bound-compare --example knots -- [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq]
+//! ```
+//!
+//! Runs queries `K .. K + N` of the scene of `--queries`'s length (default:
+//! all 200 queries of `table1`), one pass after a warm-up of the first
+//! eight, and prints per size: mean ms per query (the `Instant` around each
+//! query, as `table1` times it), iterations, node pairs, triangle pairs,
+//! contacts and separations. The queries are timed inside
+//! `run_queries`, which is never inlined, so that an instruction count can
+//! be limited to them (the trees' builds left out):
+//!
+//! ```sh
+//! valgrind --tool=callgrind --collect-atstart=no --toggle-collect='*run_queries*' \
+//!     target/release/examples/knots --sizes 2.8K --queries 20
+//! ```
+//!
+//! The file uses only `motion_bound::testkit::table1`, which has not changed
+//! since `f8e816b`, so the same file builds against older commits
+//! (`docs/performance.md`, entries of 2026-12-03).
+
+use std::process::ExitCode;
+use std::time::Instant;
+
+use motion_bound::ca::{BoundChoice, CaOutcome, CaParams};
+use motion_bound::scenes::TorusKnotSize;
+use motion_bound::testkit::table1::{label, KnotScene, SPIN};
+
+/// What a run of queries measured.
+#[derive(Default)]
+struct Totals {
+    ms: f64,
+    queries: usize,
+    iterations: u64,
+    node_pairs: u64,
+    triangle_pairs: u64,
+    contacts: usize,
+    separated: usize,
+}
+
+/// Runs `queries` of `scene` with `params`, timing each.
+#[inline(never)]
+fn run_queries(scene: &KnotScene, skip: usize, params: &CaParams<f64>) -> Totals {
+    let mut t = Totals::default();
+    for q in scene.queries.iter().skip(skip) {
+        let start = Instant::now();
+        let (report, stats) = scene.run(q, params);
+        t.ms += start.elapsed().as_secs_f64() * 1e3;
+        t.queries += 1;
+        t.iterations += u64::from(report.iterations);
+        t.node_pairs += stats.node_pairs;
+        t.triangle_pairs += stats.triangle_pairs;
+        match report.outcome {
+            CaOutcome::Separated => t.separated += 1,
+            CaOutcome::Contact { .. } | CaOutcome::InitialContact(_) => t.contacts += 1,
+            _ => {}
+        }
+    }
+    t
+}
+
+fn main() -> ExitCode {
+    let mut sizes = TorusKnotSize::ALL.to_vec();
+    let (mut queries, mut skip, mut bound) = (200, 0, BoundChoice::Evq);
+    let mut it = std::env::args().skip(1);
+    while let Some(flag) = it.next() {
+        let value = it.next().unwrap_or_default();
+        match flag.as_str() {
+            "--sizes" => {
+                sizes = value
+                    .split(',')
+                    .filter_map(|s| TorusKnotSize::ALL.into_iter().find(|&k| label(k) == s))
+                    .collect();
+            }
+            "--queries" => queries = value.parse().unwrap_or(0),
+            "--skip" => skip = value.parse().unwrap_or(0),
+            "--bound" if value == "nevq" => bound = BoundChoice::Nevq,
+            "--bound" if value == "evq" => bound = BoundChoice::Evq,
+            _ => {
+                eprintln!(
+                    "usage: knots [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq]"
+                );
+                return ExitCode::FAILURE;
+            }
+        }
+    }
+    if queries == 0 || sizes.is_empty() {
+        eprintln!("--queries must be positive and --sizes name 2.8K, 11K or 34K");
+        return ExitCode::FAILURE;
+    }
+    let params = KnotScene::params(bound);
+    for size in sizes {
+        let scene = KnotScene::new(size, skip + queries, SPIN);
+        for q in scene.queries.iter().take(8) {
+            std::hint::black_box(scene.run(q, &params));
+        }
+        let t = run_queries(&scene, skip, &params);
+        let n = t.queries as f64;
+        println!(
+            "{:>5}: queries {}, mean ms {:.4}, iterations {:.3}, node pairs {:.1}, triangle pairs {:.1}, contacts {}, separated {}",
+            label(size),
+            t.queries,
+            t.ms / n,
+            t.iterations as f64 / n,
+            t.node_pairs as f64 / n,
+            t.triangle_pairs as f64 / n,
+            t.contacts,
+            t.separated
+        );
+    }
+    ExitCode::SUCCESS
+}
