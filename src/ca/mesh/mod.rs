@@ -233,8 +233,10 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             );
         }
         self.ws.clear();
-        self.ws.placed.push(pa.place(self.a, 0));
-        self.ws.placed.push(pb.place(self.b, 0));
+        let roots = (
+            self.ws.placed_slot(0, 0, || pa.place(self.a, 0)),
+            self.ws.placed_slot(1, 0, || pb.place(self.b, 0)),
+        );
         let root = if limited {
             NodeStep::Apart {
                 step: T::ZERO,
@@ -243,7 +245,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         } else {
             NodeStep::Near(-T::INFINITY)
         };
-        self.ws.enqueue(Pending::new(root, (0, 0), (0, 1)));
+        self.ws.enqueue(Pending::new(root, (0, 0), roots));
         while let Some(Queued { slot, .. }) = self.ws.pop() {
             let Pending {
                 near,
@@ -339,13 +341,12 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 (nb.left, nb.right)
             };
             for child in [left, right] {
-                // Place the new node once; the kept one is already placed.
-                let slot = self.ws.placed.len() as u32;
+                // Place the new node once per step; the kept one is placed.
                 let (pair, at) = if split_a {
-                    self.ws.placed.push(pa.place(self.a, child));
+                    let slot = self.ws.placed_slot(0, child, || pa.place(self.a, child));
                     ((child, j), (slot, at.1))
                 } else {
-                    self.ws.placed.push(pb.place(self.b, child));
+                    let slot = self.ws.placed_slot(1, child, || pb.place(self.b, child));
                     ((i, child), (at.0, slot))
                 };
                 let q = (self.ws.placed[at.0 as usize], self.ws.placed[at.1 as usize]);

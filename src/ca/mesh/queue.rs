@@ -48,6 +48,13 @@ pub struct MeshWorkspace<T> {
     pub(super) pending: Vec<Pending>,
     /// The nodes placed at the current step, indexed from [`Pending`].
     pub(super) placed: Vec<PlacedNode<T>>,
+    /// A direct-mapped cache per body (A, then B, `SEEN` entries each, by
+    /// the node's index modulo `SEEN`): the stamp of the step that placed
+    /// the node, the node, and where in `placed`, so that a node met in
+    /// several pairs of a step is usually placed once.
+    seen: Vec<(u32, u32, u32)>,
+    /// The current step's stamp (never 0 once a step has begun).
+    stamp: u32,
 }
 
 impl<T: Float> MeshWorkspace<T> {
@@ -59,6 +66,8 @@ impl<T: Float> MeshWorkspace<T> {
             held: None,
             pending: Vec::new(),
             placed: Vec::new(),
+            seen: Vec::new(),
+            stamp: 0,
         }
     }
 
@@ -68,6 +77,35 @@ impl<T: Float> MeshWorkspace<T> {
         self.held = None;
         self.pending.clear();
         self.placed.clear();
+        self.stamp = self.stamp.wrapping_add(1);
+        if self.stamp == 0 {
+            // Every stamp used: forget them all.
+            self.seen.clear();
+            self.stamp = 1;
+        }
+    }
+
+    /// Where node `node` of body `side` (0 for A, 1 for B) is placed at the
+    /// current step, placing it by `place` if no pair of the step has.
+    #[inline]
+    pub(super) fn placed_slot(
+        &mut self,
+        side: usize,
+        node: u32,
+        place: impl FnOnce() -> PlacedNode<T>,
+    ) -> u32 {
+        if self.seen.is_empty() {
+            self.seen.resize(2 * SEEN, (0, 0, 0));
+        }
+        let k = side * SEEN + (node as usize) % SEEN;
+        let (stamp, at, slot) = self.seen[k];
+        if stamp == self.stamp && at == node {
+            return slot;
+        }
+        let slot = self.placed.len() as u32;
+        self.placed.push(place());
+        self.seen[k] = (self.stamp, node, slot);
+        slot
     }
 
     /// Puts a node pair in the best-first queue.
@@ -117,6 +155,9 @@ impl<T: Float> Default for MeshWorkspace<T> {
         Self::new()
     }
 }
+
+/// The entries per body of the placement cache.
+const SEEN: usize = 512;
 
 /// What `MeshPair::node_step` found for a node pair.
 #[derive(Clone, Copy, Debug)]
@@ -198,3 +239,72 @@ impl Ord for Queued {
 /// An `f64` key (a step or gap converted exactly from `f32` or `f64`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct OrdF64(pub(super) f64);
+
+#[cfg(test)]
+mod tests {
+    use super::{MeshWorkspace, NodeStep, Pending, Queued};
+    use crate::ca::mesh::traversal::PlacedNode;
+    use crate::Vec3;
+    use alloc::collections::BinaryHeap;
+    use alloc::vec::Vec;
+
+    proptest::proptest! {
+        /// The workspace's queue (a held entry beside a heap) pops entries
+        /// in the order a plain binary heap of the same entries pops them,
+        /// whatever the interleaving of pushes and pops: the traversal's
+        /// order, and so its outcomes, are the heap's.
+        #[test]
+        fn the_held_entry_keeps_the_heaps_order(
+            ops in proptest::collection::vec((0u8..4, -3i8..4, proptest::bool::ANY), 1..200)
+        ) {
+            let mut ws = MeshWorkspace::<f64>::new();
+            let mut plain = BinaryHeap::new();
+            for (k, (op, key, near)) in ops.into_iter().enumerate() {
+                if op == 0 {
+                    proptest::prop_assert_eq!(ws.pop(), plain.pop());
+                } else {
+                    // Few distinct keys: ties are broken by the slot.
+                    let step = if near {
+                        NodeStep::Near(f64::from(key))
+                    } else {
+                        NodeStep::Apart { step: f64::from(key), far: false }
+                    };
+                    let pair = Pending::new(step, (k as u32, 0), (0, 0));
+                    plain.push(Queued { near: pair.near, key: pair.key, slot: ws.pending.len() as u32 });
+                    ws.enqueue(pair);
+                }
+                proptest::prop_assert_eq!(ws.len(), plain.len());
+            }
+            let rest: Vec<_> = core::iter::from_fn(|| ws.pop()).collect();
+            let plain_rest: Vec<_> = core::iter::from_fn(|| plain.pop()).collect();
+            proptest::prop_assert_eq!(rest, plain_rest);
+        }
+    }
+
+    /// A node is placed once per step (the cache returns its first slot),
+    /// A's and B's nodes of the same index are told apart, two nodes sharing
+    /// a cache entry each get their own placement, and a new step places
+    /// again.
+    #[test]
+    fn a_node_is_placed_once_per_step() {
+        let mut ws = MeshWorkspace::<f64>::new();
+        let mut placements = 0;
+        let mut place = |x: f64| {
+            placements += 1;
+            PlacedNode::at(Vec3::new(x, 0.0, 0.0))
+        };
+        ws.clear();
+        let first = ws.placed_slot(0, 7, || place(1.0));
+        assert_eq!(ws.placed_slot(0, 7, || place(9.0)), first);
+        let b = ws.placed_slot(1, 7, || place(2.0));
+        assert_ne!(b, first);
+        let other = ws.placed_slot(0, 7 + super::SEEN as u32, || place(3.0));
+        assert_ne!(other, first);
+        let again = ws.placed_slot(0, 7, || place(4.0));
+        assert_eq!(ws.placed[again as usize].centre.x, 4.0, "evicted, placed anew");
+        ws.clear();
+        let next = ws.placed_slot(0, 7, || place(5.0));
+        assert_eq!((next, ws.placed[next as usize].centre.x), (0, 5.0));
+        assert_eq!(placements, 5);
+    }
+}

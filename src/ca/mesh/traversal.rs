@@ -40,6 +40,16 @@ pub(super) struct PlacedNode<T> {
 }
 
 impl<T: Float> PlacedNode<T> {
+    /// A node at `centre` with an empty rectangle (for tests).
+    #[cfg(test)]
+    pub(super) fn at(centre: Vec3<T>) -> Self {
+        Self {
+            centre,
+            long: [Vec3::ZERO; 2],
+            half: [T::ZERO; 2],
+        }
+    }
+
     /// The point of the node's middle rectangle nearest `p` (exactly so in
     /// exact arithmetic for orthonormal axes; otherwise some point near the
     /// rectangle, which is all its one use needs).
