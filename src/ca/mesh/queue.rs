@@ -301,7 +301,10 @@ mod tests {
         let other = ws.placed_slot(0, 7 + super::SEEN as u32, || place(3.0));
         assert_ne!(other, first);
         let again = ws.placed_slot(0, 7, || place(4.0));
-        assert_eq!(ws.placed[again as usize].centre.x, 4.0, "evicted, placed anew");
+        assert_eq!(
+            ws.placed[again as usize].centre.x, 4.0,
+            "evicted, placed anew"
+        );
         ws.clear();
         let next = ws.placed_slot(0, 7, || place(5.0));
         assert_eq!((next, ws.placed[next as usize].centre.x), (0, 5.0));
