@@ -18,8 +18,9 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion};
-use motion_bound::scene::{BodyShape, Scene, SceneParams, SceneWorkspace};
-use motion_bound::scenes::torus;
+use motion_bound::bodies::torus;
+use motion_bound::ca::Shape;
+use motion_bound::scene::{Scene, SceneParams, SceneWorkspace};
 use motion_bound::testkit::toi::Rng;
 use motion_bound::{BallTree, RigidMotion, TimeInterval};
 
@@ -42,7 +43,7 @@ fn motions(n: usize, spacing: f64, seed: u64) -> Vec<RigidMotion<f64>> {
 fn scene<'a>(tree: &'a BallTree<f64>, n: usize, spacing: f64) -> Scene<'a, f64> {
     let mut s = Scene::try_new(TimeInterval::try_new(0.0, 1.0).expect("frame")).expect("scene");
     for m in motions(n, spacing, 0x5CE7E + n as u64) {
-        s.try_add(BodyShape::Mesh(tree), m).expect("body");
+        s.try_add(Shape::Mesh(tree), m).expect("body");
     }
     s
 }

@@ -17,9 +17,9 @@ use std::time::{Duration, Instant};
 #[path = "../tests/common/meshes.rs"]
 mod meshes;
 
+use motion_bound::bodies::{board, torus, TorusKnotSize};
 use motion_bound::ca::{time_of_impact, BoundChoice, CaParams, MeshPair};
 use motion_bound::reference::{exact, Exact};
-use motion_bound::scenes::{board, torus, TorusKnotSize};
 use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
 use motion_bound::testkit::toi::{fly_by, random_rotation, reach, rotate_mesh, Rng};
 use motion_bound::testkit::{random_blob, SplitMix64};

@@ -27,8 +27,8 @@ mod meshes;
 
 use std::time::Instant;
 
+use motion_bound::bodies::{torus, TorusKnot};
 use motion_bound::ca::{time_of_impact, CaOutcome, CaParams, MeshPair, MeshWorkspace};
-use motion_bound::scenes::{torus, TorusKnot};
 use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
 use motion_bound::testkit::toi::Rng;
 use motion_bound::{BallTree, Isometry, RigidMotion, Rotation, TriMesh, Vec3};

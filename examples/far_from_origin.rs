@@ -18,8 +18,8 @@ mod meshes;
 
 use std::time::Instant;
 
+use motion_bound::bodies::icosphere;
 use motion_bound::ca::{time_of_impact, CaOutcome, CaParams, CaReport, MeshPair};
-use motion_bound::scenes::icosphere;
 use motion_bound::{BallTree, Float, Point3, RigidMotion, TimeInterval, TriMesh, Vec3};
 
 /// The bunny centred and scaled to reach 0.5, times `scale`.

@@ -30,8 +30,8 @@ mod shape_truth;
 use std::collections::BTreeSet;
 use std::time::Instant;
 
-use motion_bound::ca::{CaParams, Compound, Part};
-use motion_bound::scene::{BodyShape, Scene, SceneParams, SceneWorkspace};
+use motion_bound::ca::{CaParams, Compound, Part, Shape};
+use motion_bound::scene::{Scene, SceneParams, SceneWorkspace};
 use motion_bound::testkit::toi::Rng;
 use motion_bound::{
     BallTree, Convex, HalfSpace, Isometry, RigidMotion, Rotation, TimeInterval, Vec3,
@@ -51,7 +51,7 @@ const SAMPLES: usize = 8;
 /// state.
 struct Body {
     kind: &'static str,
-    shape: BodyShape<'static, f64>,
+    shape: Shape<'static, f64>,
     solid: Solid,
     reach: f64,
     x: Vec3<f64>,
@@ -61,12 +61,7 @@ struct Body {
 }
 
 impl Body {
-    fn new(
-        kind: &'static str,
-        shape: BodyShape<'static, f64>,
-        solid: Solid,
-        rng: &mut Rng,
-    ) -> Self {
+    fn new(kind: &'static str, shape: Shape<'static, f64>, solid: Solid, rng: &mut Rng) -> Self {
         let reach = solid.reach();
         let room = HALF - reach;
         Self {
@@ -90,7 +85,7 @@ impl Body {
     }
 
     fn motion(&self, frame: TimeInterval<f64>) -> RigidMotion<f64> {
-        if matches!(self.shape, BodyShape::HalfSpace(_)) {
+        if matches!(self.shape, Shape::HalfSpace(_)) {
             return RigidMotion::try_new(
                 motion_bound::Point3::ORIGIN,
                 Vec3::ZERO,
@@ -104,7 +99,7 @@ impl Body {
     }
 
     fn integrate(&mut self) {
-        if matches!(self.shape, BodyShape::HalfSpace(_)) {
+        if matches!(self.shape, Shape::HalfSpace(_)) {
             return;
         }
         self.x = self.x + self.v * DT;
@@ -161,7 +156,7 @@ fn main() {
     let ground = HalfSpace::try_new(Vec3::new(0.0, 1.0, 0.0)).expect("ground");
     bodies.push(Body {
         kind: "ground",
-        shape: BodyShape::HalfSpace(ground),
+        shape: Shape::HalfSpace(ground),
         solid: Solid::default(),
         reach: 0.0,
         x: Vec3::ZERO,
@@ -173,7 +168,7 @@ fn main() {
         let r = rng.range(0.15, 0.3);
         bodies.push(Body::new(
             "ball",
-            BodyShape::Shape(Convex::try_ball(r).expect("ball")),
+            Shape::Convex(Convex::try_ball(r).expect("ball")),
             Solid::ball(r),
             &mut rng,
         ));
@@ -183,7 +178,7 @@ fn main() {
         let s = Convex::try_capsule(h, r).expect("capsule");
         bodies.push(Body::new(
             "capsule",
-            BodyShape::Shape(s),
+            Shape::Convex(s),
             Solid::capsule(h, r),
             &mut rng,
         ));
@@ -200,7 +195,7 @@ fn main() {
             .expect("cuboid");
         bodies.push(Body::new(
             "cuboid",
-            BodyShape::Shape(s),
+            Shape::Convex(s),
             Solid::cuboid(half, r),
             &mut rng,
         ));
@@ -210,7 +205,7 @@ fn main() {
         let s = Convex::try_cylinder(h, rho).expect("cylinder");
         bodies.push(Body::new(
             "cylinder",
-            BodyShape::Shape(s),
+            Shape::Convex(s),
             Solid::cylinder(h, rho),
             &mut rng,
         ));
@@ -220,7 +215,7 @@ fn main() {
         let s = Convex::try_cone(h, rho).expect("cone");
         bodies.push(Body::new(
             "cone",
-            BodyShape::Shape(s),
+            Shape::Convex(s),
             Solid::cone(h, rho),
             &mut rng,
         ));
@@ -228,7 +223,7 @@ fn main() {
     for _ in 0..5 {
         bodies.push(Body::new(
             "bunny",
-            BodyShape::Mesh(bunny),
+            Shape::Mesh(bunny),
             Solid::mesh(&bunny_mesh),
             &mut rng,
         ));
@@ -265,7 +260,7 @@ fn main() {
     );
     bodies.push(Body::new(
         "compound",
-        BodyShape::Compound(table),
+        Shape::Compound(table),
         table_truth,
         &mut rng,
     ));
@@ -303,7 +298,7 @@ fn main() {
     ]);
     bodies.push(Body::new(
         "compound",
-        BodyShape::Compound(dumbbell),
+        Shape::Compound(dumbbell),
         dumbbell_truth,
         &mut rng,
     ));
@@ -326,7 +321,7 @@ fn main() {
     ]);
     bodies.push(Body::new(
         "compound",
-        BodyShape::Compound(bunny_box),
+        Shape::Compound(bunny_box),
         bunny_box_truth,
         &mut rng,
     ));
@@ -396,13 +391,13 @@ fn main() {
                 let (a, b) = (&bodies[i], &bodies[j]);
                 let ground = [a, b]
                     .iter()
-                    .filter(|x| matches!(x.shape, BodyShape::HalfSpace(_)))
+                    .filter(|x| matches!(x.shape, Shape::HalfSpace(_)))
                     .count();
                 if ground == 2 {
                     continue;
                 }
                 let close = if ground == 1 {
-                    let body = if ground == 1 && matches!(a.shape, BodyShape::HalfSpace(_)) {
+                    let body = if ground == 1 && matches!(a.shape, Shape::HalfSpace(_)) {
                         b
                     } else {
                         a
@@ -426,10 +421,10 @@ fn main() {
         }
         for (i, j, n) in impulses {
             let n = n * (1.0 / n.length().max(1e-300));
-            if matches!(bodies[i].shape, BodyShape::HalfSpace(_)) {
+            if matches!(bodies[i].shape, Shape::HalfSpace(_)) {
                 let vj = bodies[j].v;
                 bodies[j].v = vj - n * (2.0 * vj.dot(n).min(0.0));
-            } else if matches!(bodies[j].shape, BodyShape::HalfSpace(_)) {
+            } else if matches!(bodies[j].shape, Shape::HalfSpace(_)) {
                 let vi = bodies[i].v;
                 bodies[i].v = vi - n * (2.0 * vi.dot(n).max(0.0));
             } else {
@@ -459,7 +454,7 @@ fn main() {
 /// plane).
 fn truth(a: &Body, ma: &RigidMotion<f64>, b: &Body, mb: &RigidMotion<f64>) -> Option<f64> {
     match (&a.shape, &b.shape) {
-        (BodyShape::HalfSpace(h), _) => first_sampled_landing(
+        (Shape::HalfSpace(h), _) => first_sampled_landing(
             &b.solid,
             mb,
             ma,
@@ -467,7 +462,7 @@ fn truth(a: &Body, ma: &RigidMotion<f64>, b: &Body, mb: &RigidMotion<f64>) -> Op
             (0.0, DT),
             SAMPLES,
         ),
-        (_, BodyShape::HalfSpace(h)) => first_sampled_landing(
+        (_, Shape::HalfSpace(h)) => first_sampled_landing(
             &a.solid,
             ma,
             mb,

@@ -56,7 +56,7 @@
 //!
 //! [`ca::time_of_impact`] runs conservative advancement with a stepper: two
 //! meshes through their ball trees ([`ca::MeshPair`]), convex vertex sets with
-//! GJK or an engine's own distance oracle ([`ca::ConvexPair`]), two balls
+//! GJK or an engine's own distance oracle ([`ca::VertexSetPair`]), two balls
 //! ([`ca::BallPair`]), or a caller's [`ca::CaStep`]. A body's points and its
 //! [`BallTree`] are built once, in its own frame; each query hands over the
 //! bodies' motions from their start poses.
@@ -165,7 +165,7 @@
 //! | `std` | yes | float functions from `std`; implies `alloc` |
 //! | `libm` | no | float functions from `libm`; with `std` off the crate is `#![no_std]` (and allocation-free unless `alloc` is on) |
 //! | `alloc` | with `std` | owned meshes ([`TriMesh`]), ball trees ([`BallTree`]), the mesh stepper, chains ([`chain`]), OFF and STL input, OFF output; needs no `std` |
-//! | `scenes` | no | built-in bodies ([`scenes`]): the seed's torus knots, tori, boards, boxes, icospheres |
+//! | `bodies` | no | built-in test bodies ([`bodies`]): the seed's torus knots, tori, boards, boxes, icospheres (`scenes`, its old name, still turns it on) |
 //! | `obj` | no | OBJ input with `tobj` (`TriMesh::from_obj_str`); implies `std` and `alloc` |
 //! | `urdf` | no | chains from URDF files (`Chain::from_urdf_file`, with `urdf-rs`), their meshes as OBJ or STL; implies `obj` |
 //! | `mint` | no | conversions to and from `mint` vectors, points and quaternions (glam, nalgebra and cgmath interop) |
@@ -213,13 +213,23 @@ mod rounding;
 pub mod scene;
 mod shape;
 
+#[cfg(feature = "bodies")]
+#[cfg_attr(docsrs, doc(cfg(feature = "bodies")))]
+pub mod bodies;
 pub mod proofs;
 #[cfg(feature = "reference")]
 #[cfg_attr(docsrs, doc(cfg(feature = "reference")))]
 pub mod reference;
-#[cfg(feature = "scenes")]
-#[cfg_attr(docsrs, doc(cfg(feature = "scenes")))]
-pub mod scenes;
+/// The built-in test bodies under their old path: [`bodies`].
+#[cfg(feature = "bodies")]
+#[doc(hidden)]
+#[deprecated(
+    since = "0.1.0",
+    note = "renamed `bodies` (so that it cannot be read as `scene`)"
+)]
+pub mod scenes {
+    pub use crate::bodies::*;
+}
 #[cfg(feature = "testkit")]
 #[cfg_attr(docsrs, doc(cfg(feature = "testkit")))]
 pub mod testkit;
@@ -245,8 +255,8 @@ pub use math::direction::Direction;
 pub use math::isometry::Isometry;
 pub use math::point::{BodyPoint, Point3};
 pub use math::pose::Pose;
-pub use math::quaternion::Rotation;
-pub use math::rotation::{rotate_about_axis, RotationPlane};
+pub use math::rotation::Rotation;
+pub use math::rotation_plane::{rotate_about_axis, RotationPlane};
 pub use math::vec3::Vec3;
 #[cfg(feature = "obj")]
 pub use mesh::ObjError;

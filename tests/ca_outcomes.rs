@@ -12,11 +12,11 @@
 #[path = "common/meshes.rs"]
 mod meshes;
 
+use motion_bound::bodies::torus;
 use motion_bound::ca::{
-    time_of_impact, BallPair, CaOutcome, CaParams, CaStep, ContactCriterion, ConvexPair, MeshPair,
-    StepResult,
+    time_of_impact, BallPair, CaOutcome, CaParams, CaStep, ContactCriterion, MeshPair, StepResult,
+    VertexSetPair,
 };
-use motion_bound::scenes::torus;
 use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
 use motion_bound::testkit::toi::{fly_by, reach, Rng};
 use motion_bound::{BallTree, BoundingBall, PreparedMotion, RigidMotion, TriMesh, VertexSet};
@@ -134,7 +134,7 @@ fn balls_and_convex_pairs_far_apart_are_separated() {
     let spin = RigidMotion::try_from_arrays([-10.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 2.0, 1.0])
         .expect("motion");
     let r = time_of_impact(
-        &mut ConvexPair::with_gjk(body, body),
+        &mut VertexSetPair::with_gjk(body, body),
         &spin,
         &still(10.0),
         &CaParams::default(),
@@ -305,8 +305,8 @@ fn the_six_table1_fly_bys_without_contact_are_separated_at_every_knot_size() {
     // exact intersection test, and two outside implementations, say so); an
     // earlier version reported each as a contact by time tolerance one ulp
     // before the end.
+    use motion_bound::bodies::TorusKnotSize;
     use motion_bound::ca::BoundChoice;
-    use motion_bound::scenes::TorusKnotSize;
     use motion_bound::testkit::table1::{label, KnotScene, SPIN};
     const NONE: [usize; 6] = [41, 46, 67, 89, 104, 188];
     for size in TorusKnotSize::ALL {

@@ -8,11 +8,11 @@
 //! spinning fast, and convex solids through the GJK stepper. Set
 //! `CA_TOI_QUERIES` to run more queries per scene.
 
+use motion_bound::bodies::{board, icosphere, torus, TorusKnot};
 use motion_bound::ca::{
     time_of_impact, BallPair, BoundChoice, CaOutcome, CaParams, CaReport, CaStep, ContactCriterion,
-    ConvexPair, MeshPair, MeshParams, StepResult,
+    MeshPair, MeshParams, StepResult, VertexSetPair,
 };
-use motion_bound::scenes::{board, icosphere, torus, TorusKnot};
 use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
 use motion_bound::testkit::toi::{fly_by, random_rotation, reach, rotate_mesh, FlyBy, Rng};
 use motion_bound::{
@@ -381,7 +381,7 @@ fn convex_solids_through_gjk_are_never_late_and_never_missed() {
             VertexTree::try_new(&va).expect("valid"),
             VertexTree::try_new(&vb).expect("valid"),
         );
-        let mut pair = ConvexPair::with_gjk(va, vb);
+        let mut pair = VertexSetPair::with_gjk(va, vb);
         if k % 2 == 1 {
             pair = pair.with_vertex_trees(Some(&ta), Some(&tb));
         }

@@ -19,10 +19,10 @@
 #[path = "common/meshes.rs"]
 mod meshes;
 
+use motion_bound::bodies::icosphere;
 use motion_bound::ca::{
     time_of_impact, CaOutcome, CaParams, CaReport, ContactCriterion, MeshPair, Work,
 };
-use motion_bound::scenes::icosphere;
 use motion_bound::{BallTree, Float, Point3, RigidMotion, TimeInterval, TriMesh, Vec3};
 
 /// The contact distance (at unit scale).

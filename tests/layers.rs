@@ -41,7 +41,7 @@ const LAYERS: [(&str, u32); 19] = [
     ("ca", 8),
     ("scene", 9),
     ("chain", 9),
-    ("scenes", 9),
+    ("bodies", 9),
     ("reference", 9),
     ("testkit", 9),
     ("features", 9),

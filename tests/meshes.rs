@@ -5,7 +5,7 @@
 mod meshes;
 
 use meshes::{load_shipped, SHIPPED};
-use motion_bound::scenes::{TorusKnot, TorusKnotSize};
+use motion_bound::bodies::{TorusKnot, TorusKnotSize};
 use motion_bound::TriMesh;
 
 #[test]

@@ -4,8 +4,8 @@
 //! (The allocation counter is `allocation-counter`'s global allocator, which
 //! only this test binary links.)
 
+use motion_bound::bodies::{torus, TorusKnot};
 use motion_bound::ca::{time_of_impact, BallPair, CaParams, MeshPair, MeshWorkspace};
-use motion_bound::scenes::{torus, TorusKnot};
 use motion_bound::testkit::toi::{fly_by, reach, Rng};
 use motion_bound::{BallTree, BoundingBall, Isometry, Point3, RigidMotion, Rotation, Vec3};
 
@@ -80,7 +80,8 @@ fn a_steady_query_loop_allocates_nothing() {
 /// the workspace has grown.
 #[test]
 fn a_steady_scene_frame_loop_allocates_nothing() {
-    use motion_bound::scene::{BodyShape, Scene, SceneParams, SceneWorkspace};
+    use motion_bound::ca::Shape;
+    use motion_bound::scene::{Scene, SceneParams, SceneWorkspace};
     use motion_bound::TimeInterval;
     let ring = torus::<f64>(0.5, 0.1, 24, 8).expect("ring");
     let tree = BallTree::try_from_mesh(&ring).expect("tree");
@@ -99,7 +100,7 @@ fn a_steady_scene_frame_loop_allocates_nothing() {
         .collect();
     let mut scene = Scene::try_new(TimeInterval::try_new(0.0, 1.0).expect("frame")).expect("scene");
     for m in &frames[0] {
-        scene.try_add(BodyShape::Mesh(&tree), *m).expect("body");
+        scene.try_add(Shape::Mesh(&tree), *m).expect("body");
     }
     let params = SceneParams::default();
     let mut ws = SceneWorkspace::new();
@@ -129,8 +130,8 @@ fn a_steady_scene_frame_loop_allocates_nothing() {
 /// compound): every pair family's stepper shares the scene's workspace.
 #[test]
 fn a_steady_mixed_scene_frame_loop_allocates_nothing() {
-    use motion_bound::ca::{Compound, Part};
-    use motion_bound::scene::{BodyShape, Scene, SceneParams, SceneWorkspace};
+    use motion_bound::ca::{Compound, Part, Shape};
+    use motion_bound::scene::{Scene, SceneParams, SceneWorkspace};
     use motion_bound::{Convex, HalfSpace, TimeInterval};
     let ring = torus::<f64>(0.5, 0.1, 24, 8).expect("ring");
     let tree = BallTree::try_from_mesh(&ring).expect("tree");
@@ -150,12 +151,12 @@ fn a_steady_mixed_scene_frame_loop_allocates_nothing() {
     ])
     .expect("compound");
     let shapes = [
-        BodyShape::Shape(Convex::try_ball(0.4).expect("ball")),
-        BodyShape::Shape(Convex::try_capsule(0.4, 0.2).expect("capsule")),
-        BodyShape::Shape(Convex::try_cuboid([0.3, 0.4, 0.2]).expect("cuboid")),
-        BodyShape::Shape(Convex::try_cylinder(0.4, 0.3).expect("cylinder")),
-        BodyShape::Mesh(&tree),
-        BodyShape::Compound(&dumbbell),
+        Shape::Convex(Convex::try_ball(0.4).expect("ball")),
+        Shape::Convex(Convex::try_capsule(0.4, 0.2).expect("capsule")),
+        Shape::Convex(Convex::try_cuboid([0.3, 0.4, 0.2]).expect("cuboid")),
+        Shape::Convex(Convex::try_cylinder(0.4, 0.3).expect("cylinder")),
+        Shape::Mesh(&tree),
+        Shape::Compound(&dumbbell),
     ];
     let mut rng = Rng::new(12);
     let frames: Vec<Vec<RigidMotion<f64>>> = (0..6)
@@ -178,7 +179,7 @@ fn a_steady_mixed_scene_frame_loop_allocates_nothing() {
     let ground = HalfSpace::try_new(Vec3::new(0.0, 1.0, 0.0)).expect("ground");
     let still = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3]).expect("still");
     scene
-        .try_add(BodyShape::HalfSpace(ground), still)
+        .try_add(Shape::HalfSpace(ground), still)
         .expect("ground");
     for (i, m) in frames[0].iter().enumerate() {
         scene.try_add(shapes[i % shapes.len()], *m).expect("body");

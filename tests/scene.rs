@@ -6,11 +6,9 @@
 
 mod common;
 
-use motion_bound::ca::{CaOutcome, CaParams};
-use motion_bound::scene::{
-    BodyShape, Groups, Scene, SceneParams, SceneQueryError, SceneWorkspace, ShapeKind, SweptBox,
-};
-use motion_bound::scenes;
+use motion_bound::bodies;
+use motion_bound::ca::{CaOutcome, CaParams, Shape, ShapeKind};
+use motion_bound::scene::{Groups, Scene, SceneParams, SceneQueryError, SceneWorkspace, SweptBox};
 use motion_bound::testkit::ground_truth::{first_sampled_contact, place, MeshRef};
 use motion_bound::testkit::toi::Rng;
 use motion_bound::{
@@ -235,7 +233,7 @@ fn culled_ball_pairs_never_touch_and_tested_ones_are_never_late() {
         let bodies = ball_scene(&mut rng, 60, 14.0);
         let mut scene = Scene::try_new(TimeInterval::try_new(0.0, 1.0).unwrap()).unwrap();
         for (ball, m) in &bodies {
-            scene.try_add(BodyShape::Ball(*ball), *m).unwrap();
+            scene.try_add(Shape::Ball(*ball), *m).unwrap();
         }
         let report = scene.query(&mut ws, &params).unwrap();
         let reported: std::collections::BTreeMap<(usize, usize), CaOutcome<f64>> = report
@@ -289,7 +287,7 @@ fn culled_ball_pairs_never_touch_and_tested_ones_are_never_late() {
 /// hit each other, against sampled exact intersection.
 #[test]
 fn mesh_scene_pairs_match_sampled_ground_truth() {
-    let mesh = scenes::torus::<f64>(0.5, 0.15, 24, 12).unwrap();
+    let mesh = bodies::torus::<f64>(0.5, 0.15, 24, 12).unwrap();
     let tree = BallTree::try_from_mesh(&mesh).unwrap();
     let mr = MeshRef::from(&mesh);
     let params = SceneParams::default();
@@ -307,7 +305,7 @@ fn mesh_scene_pairs_match_sampled_ground_truth() {
             })
             .collect();
         for m in &motions {
-            scene.try_add(BodyShape::Mesh(&tree), *m).unwrap();
+            scene.try_add(Shape::Mesh(&tree), *m).unwrap();
         }
         let report = scene.query(&mut ws, &params).unwrap();
         for i in 0..8 {
@@ -352,27 +350,27 @@ fn every_skip_shows_in_its_counter() {
     let still = |x: f64| Isometry::try_from_translation(Vec3::new(x, 0.0, 0.0)).unwrap();
     // Two static cubes touching each other, far from the rest.
     scene
-        .try_add_static(BodyShape::Convex(set), still(100.0))
+        .try_add_static(Shape::VertexSet(set), still(100.0))
         .unwrap();
     scene
-        .try_add_static(BodyShape::Convex(set), still(100.9))
+        .try_add_static(Shape::VertexSet(set), still(100.9))
         .unwrap();
     // Two cubes translating at each other, a turning one far away.
     let a = scene
         .try_add(
-            BodyShape::Convex(set),
+            Shape::VertexSet(set),
             RigidMotion::try_from_arrays([-2.0, 0.0, 0.0], [3.0, 0.0, 0.0], [0.0; 3]).unwrap(),
         )
         .unwrap();
     let b = scene
         .try_add(
-            BodyShape::Convex(set),
+            Shape::VertexSet(set),
             RigidMotion::try_from_arrays([2.0, 0.0, 0.0], [-1.0, 0.0, 0.0], [0.0; 3]).unwrap(),
         )
         .unwrap();
     scene
         .try_add(
-            BodyShape::Convex(set),
+            Shape::VertexSet(set),
             RigidMotion::try_from_arrays([0.0, -50.0, 0.0], [0.0; 3], [0.0, 0.0, 5.0]).unwrap(),
         )
         .unwrap();
@@ -413,17 +411,17 @@ fn every_skip_shows_in_its_counter() {
 
 #[test]
 fn bad_scenes_are_typed_errors() {
-    let tree = BallTree::try_from_mesh(&scenes::torus::<f64>(0.5, 0.1, 8, 4).unwrap()).unwrap();
+    let tree = BallTree::try_from_mesh(&bodies::torus::<f64>(0.5, 0.1, 8, 4).unwrap()).unwrap();
     let ball = BoundingBall::try_new([0.0; 3], 1.0).unwrap();
     let mut scene = Scene::try_new(TimeInterval::try_new(0.0, 1.0).unwrap()).unwrap();
     let m = RigidMotion::try_from_arrays([0.0; 3], [1.0, 0.0, 0.0], [0.0; 3]).unwrap();
-    scene.try_add(BodyShape::Mesh(&tree), m).unwrap();
+    scene.try_add(Shape::Mesh(&tree), m).unwrap();
     // Kinds mix (an earlier version refused a ball among meshes).
-    assert_eq!(scene.try_add(BodyShape::Ball(ball), m), Ok(1));
+    assert_eq!(scene.try_add(Shape::Ball(ball), m), Ok(1));
     assert_eq!(scene.bodies()[1].shape().kind(), ShapeKind::Ball);
     let other = m.restrict(0.0, 0.5).unwrap();
     assert_eq!(
-        scene.try_add(BodyShape::Mesh(&tree), other).err(),
+        scene.try_add(Shape::Mesh(&tree), other).err(),
         Some(SceneQueryError::IntervalMismatch { body: 2 })
     );
     assert_eq!(
@@ -442,7 +440,7 @@ fn bad_scenes_are_typed_errors() {
 #[cfg(feature = "parallel")]
 #[test]
 fn the_parallel_query_reports_what_the_serial_one_does() {
-    let mesh = scenes::torus::<f64>(0.5, 0.15, 24, 12).unwrap();
+    let mesh = bodies::torus::<f64>(0.5, 0.15, 24, 12).unwrap();
     let tree = BallTree::try_from_mesh(&mesh).unwrap();
     let mut rng = Rng::new(7);
     let mut scene = Scene::try_new(TimeInterval::try_new(0.0, 1.0).unwrap()).unwrap();
@@ -452,7 +450,7 @@ fn the_parallel_query_reports_what_the_serial_one_does() {
         let w = rng.direction().map(|x| x * rng.range(0.0, 6.0));
         scene
             .try_add(
-                BodyShape::Mesh(&tree),
+                Shape::Mesh(&tree),
                 RigidMotion::try_from_arrays(x0, v, w).unwrap(),
             )
             .unwrap();
@@ -486,7 +484,7 @@ fn the_parallel_query_reports_what_the_serial_one_does() {
 fn a_scene_of_every_kind_matches_each_pair_alone_and_culls_only_what_cannot_touch() {
     use motion_bound::ca::{time_of_impact, AnyPair};
     use motion_bound::{Convex, HalfSpace};
-    let ring = BallTree::try_from_mesh(&scenes::torus::<f64>(0.3, 0.06, 16, 6).unwrap()).unwrap();
+    let ring = BallTree::try_from_mesh(&bodies::torus::<f64>(0.3, 0.06, 16, 6).unwrap()).unwrap();
     let hull = [
         [0.2, 0.0, 0.0],
         [-0.1, 0.17, 0.0],
@@ -494,21 +492,21 @@ fn a_scene_of_every_kind_matches_each_pair_alone_and_culls_only_what_cannot_touc
         [0.0, 0.0, 0.25],
     ];
     let set = VertexSet::try_new(&hull).unwrap();
-    let shapes: Vec<BodyShape<'_, f64>> = vec![
-        BodyShape::Shape(Convex::try_ball(0.2).unwrap()),
-        BodyShape::Shape(Convex::try_capsule(0.2, 0.1).unwrap()),
-        BodyShape::Shape(Convex::try_cuboid([0.2, 0.15, 0.1]).unwrap()),
-        BodyShape::Shape(Convex::try_cylinder(0.2, 0.15).unwrap()),
-        BodyShape::Shape(Convex::try_cone(0.2, 0.15).unwrap()),
-        BodyShape::Shape(
+    let shapes: Vec<Shape<'_, f64>> = vec![
+        Shape::Convex(Convex::try_ball(0.2).unwrap()),
+        Shape::Convex(Convex::try_capsule(0.2, 0.1).unwrap()),
+        Shape::Convex(Convex::try_cuboid([0.2, 0.15, 0.1]).unwrap()),
+        Shape::Convex(Convex::try_cylinder(0.2, 0.15).unwrap()),
+        Shape::Convex(Convex::try_cone(0.2, 0.15).unwrap()),
+        Shape::Convex(
             Convex::try_cuboid([0.1; 3])
                 .unwrap()
                 .try_rounded(0.05)
                 .unwrap(),
         ),
-        BodyShape::Convex(set),
-        BodyShape::Ball(BoundingBall::try_new([0.05, 0.0, 0.0], 0.15).unwrap()),
-        BodyShape::Mesh(&ring),
+        Shape::VertexSet(set),
+        Shape::Ball(BoundingBall::try_new([0.05, 0.0, 0.0], 0.15).unwrap()),
+        Shape::Mesh(&ring),
     ];
     let frame = TimeInterval::try_new(0.0, 0.5).unwrap();
     let mut rng = Rng::new(2612);
@@ -524,7 +522,7 @@ fn a_scene_of_every_kind_matches_each_pair_alone_and_culls_only_what_cannot_touc
             frame,
         )
         .unwrap();
-        scene.try_add(BodyShape::HalfSpace(ground), mg).unwrap();
+        scene.try_add(Shape::HalfSpace(ground), mg).unwrap();
         for shape in &shapes {
             for _ in 0..2 {
                 let m = RigidMotion::try_new(
@@ -551,7 +549,7 @@ fn a_scene_of_every_kind_matches_each_pair_alone_and_culls_only_what_cannot_touc
                 let (bi, bj) = (&bodies[i], &bodies[j]);
                 if matches!(
                     (bi.shape(), bj.shape()),
-                    (BodyShape::HalfSpace(_), BodyShape::HalfSpace(_))
+                    (Shape::HalfSpace(_), Shape::HalfSpace(_))
                 ) {
                     continue;
                 }
@@ -596,18 +594,20 @@ fn a_scene_of_every_kind_matches_each_pair_alone_and_culls_only_what_cannot_touc
     );
 }
 
-/// A scene body's shape as the steppers' shape (as the scene takes it).
+/// A scene body's shape as the general convex stepper takes it: vertex sets
+/// as polytopes and balls as rounded points, so that a pair alone goes
+/// through another stepper than the dispatch's fast paths for two vertex sets
+/// (GJK on the points) and two balls (closed form).
 fn any_shape<'s>(
     b: &'s motion_bound::scene::SceneBody<'_, f64>,
 ) -> motion_bound::ca::Shape<'s, f64> {
-    use motion_bound::ca::Shape;
     use motion_bound::Convex;
     match *b.shape() {
-        BodyShape::Shape(c) => Shape::Convex(c),
-        BodyShape::HalfSpace(h) => Shape::HalfSpace(h),
-        BodyShape::Mesh(t) => Shape::Mesh(t),
-        BodyShape::Convex(v) => Shape::Convex(Convex::polytope(v)),
-        BodyShape::Ball(_) => {
+        Shape::Convex(c) => Shape::Convex(c),
+        Shape::HalfSpace(h) => Shape::HalfSpace(h),
+        Shape::Mesh(t) => Shape::Mesh(t),
+        Shape::VertexSet(v) => Shape::Convex(Convex::polytope(v)),
+        Shape::Ball(_) => {
             let ball = b.bounding_ball();
             let c = VertexSet::try_new(std::slice::from_ref(ball.centre())).unwrap();
             Shape::Convex(Convex::polytope(c).try_rounded(ball.radius()).unwrap())

@@ -1,5 +1,5 @@
 //! Conservative advancement of every pair of convex shape kinds
-//! (`ShapePair`) against sampled ground truth: never late, never missed
+//! (`ConvexPair`) against sampled ground truth: never late, never missed
 //! (`proofs/12-shapes.md`).
 //!
 //! The ground truth is independent of the code under test: each shape's core
@@ -16,11 +16,11 @@
 #[path = "common/shape_truth.rs"]
 mod shape_truth;
 
+use motion_bound::bodies::{torus, TorusKnot};
 use motion_bound::ca::{
-    time_of_impact, AnyPair, CaError, CaOutcome, CaParams, HalfSpacePair, MeshShapePair, Shape,
-    ShapePair,
+    time_of_impact, AnyPair, CaError, CaOutcome, CaParams, ConvexPair, HalfSpacePair,
+    MeshConvexPair, Shape,
 };
-use motion_bound::scenes::{torus, TorusKnot};
 use motion_bound::testkit::toi::Rng;
 use motion_bound::{BallTree, Convex, HalfSpace, RigidMotion, TriMesh, Vec3, VertexSet};
 use shape_truth::Solid;
@@ -179,7 +179,7 @@ fn every_pair_of_shape_kinds_is_never_late_and_never_missed() {
                 let mb = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], wb).expect("motion");
                 let params = CaParams::default().with_contact_distance(1e-3);
                 let report =
-                    time_of_impact(&mut ShapePair::new(a.shape, b.shape), &ma, &mb, &params)
+                    time_of_impact(&mut ConvexPair::new(a.shape, b.shape), &ma, &mb, &params)
                         .expect("a valid query");
                 let truth = first_sampled_contact(a, &ma, b, &mb);
                 let what = format!(
@@ -360,7 +360,7 @@ fn meshes_against_every_shape_kind_and_the_ground_are_never_late_and_never_misse
                 let mb = RigidMotion::try_from_arrays(start, v, wb).expect("motion");
                 let params = CaParams::default().with_contact_distance(1e-3);
                 let report = time_of_impact(
-                    &mut MeshShapePair::new(&tree, kind.shape),
+                    &mut MeshConvexPair::new(&tree, kind.shape),
                     &ma,
                     &mb,
                     &params,
@@ -403,7 +403,7 @@ fn meshes_against_every_shape_kind_and_the_ground_are_never_late_and_never_misse
             let ma = RigidMotion::try_from_arrays(start, v, w).expect("motion");
             let params = CaParams::default().with_contact_distance(1e-3);
             let report = time_of_impact(
-                &mut MeshShapePair::with_half_space(&tree, ground),
+                &mut MeshConvexPair::with_half_space(&tree, ground),
                 &ma,
                 &mg,
                 &params,

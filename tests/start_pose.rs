@@ -9,8 +9,8 @@
 //!
 //! 1,000 queries by default, in two halves; set `CA_TOI_QUERIES` to run more.
 
+use motion_bound::bodies::TorusKnot;
 use motion_bound::ca::{time_of_impact, CaOutcome, CaParams, MeshPair};
-use motion_bound::scenes::TorusKnot;
 use motion_bound::testkit::ground_truth::{first_sampled_contact, place, MeshRef};
 use motion_bound::testkit::toi::{fly_by, reach, Rng};
 use motion_bound::{BallTree, Isometry, RigidMotion, Rotation, TriMesh, Vec3};

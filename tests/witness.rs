@@ -12,8 +12,8 @@
 //! `WITNESS_CONTACTS` sets how many contacts are checked per scene (default
 //! 120; the closing note's run takes 1,000 in all).
 
+use motion_bound::bodies::{board, icosphere, torus};
 use motion_bound::ca::{time_of_impact, CaOutcome, CaParams, MeshPair, WitnessSearch};
-use motion_bound::scenes::{board, icosphere, torus};
 use motion_bound::testkit::ground_truth::place;
 use motion_bound::testkit::toi::{fly_by, reach, Rng};
 use motion_bound::{try_triangle_triangle, BallTree, Point3, RigidMotion, TriMesh};

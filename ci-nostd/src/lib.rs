@@ -26,7 +26,7 @@ pub fn time_of_impact(
     wa: [f32; 3],
     xb: [f32; 3],
 ) -> Option<f32> {
-    use motion_bound::ca::{self, CaParams, ConvexPair, Witness};
+    use motion_bound::ca::{self, CaParams, VertexSetPair, Witness};
     use motion_bound::{Point3, Pose, Vec3};
     let oracle = |pa: &Pose<f32>, pb: &Pose<f32>| {
         let mut best: Option<Witness<f32>> = None;
@@ -48,7 +48,7 @@ pub fn time_of_impact(
     let ma = RigidMotion::try_from_arrays([0.0; 3], va, wa).ok()?;
     let mb = RigidMotion::try_from_arrays(xb, [0.0; 3], [0.0; 3]).ok()?;
     let report = ca::time_of_impact(
-        &mut ConvexPair::new(sa, sb, oracle),
+        &mut VertexSetPair::new(sa, sb, oracle),
         &ma,
         &mb,
         &CaParams::default(),

@@ -13,7 +13,7 @@
 //!   whose hierarchy of pieces the query takes
 //!   ([`BallTree::try_with_piece_length`]);
 //! * `board_armadillo/tessellated`: the board of [`CELLS`] x [`CELLS`] cells a
-//!   face (`scenes::tessellated_board`, 16,896 triangles);
+//!   face (`bodies::tessellated_board`, 16,896 triangles);
 //! * `board_armadillo/board12_whole`: the 12-triangle board without pieces
 //!   (`f64::INFINITY`), on the first [`WHOLE_QUERIES`] queries only (seconds
 //!   each): what the pieces remove. `tessellated_first` runs the tessellated
@@ -32,8 +32,8 @@ use std::hint::black_box;
 use std::time::Duration;
 
 use criterion::{BenchmarkId, Criterion, SamplingMode};
+use motion_bound::bodies::{board, tessellated_board};
 use motion_bound::ca::{time_of_impact, BoundChoice, CaParams, CaReport, MeshPair};
-use motion_bound::scenes::{board, tessellated_board};
 use motion_bound::testkit::toi::{fly_by, reach, FlyBy, Rng};
 use motion_bound::BallTree;
 use motion_bound_compare::shipped_mesh;

@@ -45,8 +45,8 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, SamplingMode};
+use motion_bound::bodies::TorusKnotSize;
 use motion_bound::ca::BoundChoice;
-use motion_bound::scenes::TorusKnotSize;
 
 // The example reads fields (reach, parry's answers) that the benchmark does not.
 use motion_bound::testkit::table1::{label, KnotScene, SPIN};

@@ -26,6 +26,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use motion_bound::ca::{BoundChoice, CaOutcome, CaParams};
+#[allow(deprecated)] // The old path, so that this file still builds against older commits.
 use motion_bound::scenes::TorusKnotSize;
 use motion_bound::testkit::table1::{label, KnotScene, SPIN};
 

@@ -23,9 +23,9 @@
 
 use std::time::Instant;
 
-use motion_bound::ca::BoundChoice;
-use motion_bound::scene::{BodyShape, Scene, SceneParams, SceneStats, SceneWorkspace};
-use motion_bound::scenes::torus;
+use motion_bound::bodies::torus;
+use motion_bound::ca::{self, BoundChoice};
+use motion_bound::scene::{Scene, SceneParams, SceneStats, SceneWorkspace};
 use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
 use motion_bound::testkit::toi::Rng;
 use motion_bound::{BallTree, Point3, RigidMotion, Rotation, TimeInterval, TriMesh, Vec3};
@@ -267,7 +267,7 @@ pub fn run(
     let still = RigidMotion::try_new(Point3::ORIGIN, Vec3::ZERO, Vec3::ZERO, frame).expect("still");
     for _ in &handles {
         scene
-            .try_add(BodyShape::Mesh(&shape.tree), still)
+            .try_add(ca::Shape::Mesh(&shape.tree), still)
             .expect("body");
     }
     let params =
@@ -382,9 +382,9 @@ pub fn run(
             tally.parry_hits += u64::from(hit.is_some());
             let start = Instant::now();
             let mut one = Scene::try_new(frame).expect("scene");
-            one.try_add(BodyShape::Mesh(&shape.tree), *ma)
+            one.try_add(ca::Shape::Mesh(&shape.tree), *ma)
                 .expect("body");
-            one.try_add(BodyShape::Mesh(&shape.tree), *mb)
+            one.try_add(ca::Shape::Mesh(&shape.tree), *mb)
                 .expect("body");
             let mut ws1 = SceneWorkspace::new();
             let _ = one.query(&mut ws1, &params).expect("valid");

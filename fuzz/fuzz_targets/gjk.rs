@@ -12,7 +12,7 @@
 //!   the terms); without a direction the bound is 0. This is the guarantee a
 //!   caller's conservative-advancement step taken from `gjk_distance`'s
 //!   bound and direction relies on (`GjkResult`; `proofs/09-ca-toi.md`,
-//!   Lemma 9.1). This crate's `ConvexPair` measures its own certified gap
+//!   Lemma 9.1). This crate's `VertexSetPair` measures its own certified gap
 //!   along GJK's witness direction instead.
 //! * The bound is at most the distance, and both are 0 when GJK reports an
 //!   intersection.

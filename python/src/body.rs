@@ -4,7 +4,6 @@
 //! is how it pickles.
 
 use motion_bound::ca::{Compound, Part, Shape};
-use motion_bound::scene::BodyShape;
 use motion_bound::{BallTree, Convex, HalfSpace, Isometry, TriMesh, Vec3, VertexSet};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
@@ -141,12 +140,12 @@ impl Prepared<'_> {
     }
 
     /// The shape for a scene.
-    pub(crate) fn body_shape(&self) -> BodyShape<'_, f64> {
+    pub(crate) fn body_shape(&self) -> Shape<'_, f64> {
         match self {
-            Self::Convex(c) => BodyShape::Shape(*c),
-            Self::Mesh(t) => BodyShape::Mesh(t),
-            Self::HalfSpace(h) => BodyShape::HalfSpace(*h),
-            Self::Compound(c) => BodyShape::Compound(c),
+            Self::Convex(c) => Shape::Convex(*c),
+            Self::Mesh(t) => Shape::Mesh(t),
+            Self::HalfSpace(h) => Shape::HalfSpace(*h),
+            Self::Compound(c) => Shape::Compound(c),
         }
     }
 }

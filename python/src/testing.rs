@@ -2,7 +2,7 @@
 //! benchmarks and the `table1` report run, so that a comparison from Python
 //! (with python-fcl, say) is on the same inputs.
 
-use motion_bound::scenes::TorusKnotSize;
+use motion_bound::bodies::TorusKnotSize;
 use motion_bound::testkit::table1::{KnotScene, CONTACT_DISTANCE, SPIN};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;

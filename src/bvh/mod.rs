@@ -191,8 +191,8 @@ impl<T: Float> BallTree<T> {
     /// the mesh's triangles.
     ///
     /// ```
-    /// use motion_bound::{scenes, BallTree};
-    /// let board = scenes::board::<f64>(2.0, 2.0, 0.002)?;
+    /// use motion_bound::{bodies, BallTree};
+    /// let board = bodies::board::<f64>(2.0, 2.0, 0.002)?;
     /// let cut = BallTree::try_with_piece_length(board.vertices(), board.triangles(), 0.05)?;
     /// let whole = BallTree::try_with_piece_length(board.vertices(), board.triangles(), f64::INFINITY)?;
     /// assert_eq!((cut.triangle_count(), whole.triangle_count()), (12, 12));
@@ -419,8 +419,8 @@ impl<T: Float> BallTree<T> {
     /// exceeds [`Float::MAX_INPUT`].
     ///
     /// ```
-    /// use motion_bound::{scenes, BallTree};
-    /// let mesh = scenes::torus::<f64>(1.0, 0.25, 24, 12).unwrap();
+    /// use motion_bound::{bodies, BallTree};
+    /// let mesh = bodies::torus::<f64>(1.0, 0.25, 24, 12).unwrap();
     /// let tree = BallTree::try_from_mesh(&mesh).unwrap();
     /// assert_eq!(tree.triangle_count(), mesh.triangle_count());
     /// ```

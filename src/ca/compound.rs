@@ -1,93 +1,125 @@
-//! Compound bodies: several parts moving as one rigid body.
+//! Conservative advancement of a compound against any shape: the pairs of
+//! its parts, each by its own stepper.
 
-use alloc::vec::Vec;
+use crate::ca::{
+    AnyPair, CaError, CaParams, CaStep, MeshWorkspace, Shape, StepResult, Witness, Work,
+};
+use crate::{Direction, Float, PreparedMotion, RigidMotion};
 
-use crate::bvh::BallTree;
-use crate::error::{InputError, Quantity};
-use crate::rounding::sum_up;
-use crate::{BoundingBall, Convex, Float};
+/// A step with its witness and normal.
+type Advance<T> = (T, Option<Witness<T>>, Option<Direction<T>>);
 
-/// A part of a [`Compound`], in the compound's body frame: a convex shape
-/// (placed at its local pose by [`Convex::try_placed`]) or a mesh (its
-/// vertices given in the body frame).
-#[derive(Clone, Copy, Debug)]
-#[non_exhaustive]
-pub enum Part<'a, T> {
-    /// A convex shape.
-    Convex(Convex<'a, T>),
-    /// A triangle mesh through its tree.
-    Mesh(&'a BallTree<T>),
+/// A pair with a compound on either side: the pairs of its parts, each by
+/// its family's stepper, made afresh at every step (allocation-free: they
+/// share one mesh workspace), the least step over them (Lemma 9.2: the
+/// part pairs cover every point pair), the closest contact among them.
+#[derive(Debug)]
+pub(crate) struct CompoundPair<'a, T> {
+    a: Shape<'a, T>,
+    b: Shape<'a, T>,
+    ws: MeshWorkspace<T>,
+    work: Work,
 }
 
-/// Several parts moving as one rigid body (one motion): a table of boxes, a
-/// dumbbell, a mesh with a box. A pair of a compound and another body is the
-/// pairs of its parts (`proofs/12-shapes.md`, "Compounds").
-///
-/// ```
-/// use motion_bound::ca::{Compound, Part};
-/// use motion_bound::{Convex, InputError, Isometry, Vec3};
-/// // A dumbbell: two balls on a bar.
-/// let at = |x: f64| Isometry::try_from_translation(Vec3::new(x, 0.0, 0.0));
-/// let dumbbell = Compound::try_new(vec![
-///     Part::Convex(Convex::try_ball(0.3)?.try_placed(at(-1.0)?)?),
-///     Part::Convex(Convex::try_ball(0.3)?.try_placed(at(1.0)?)?),
-///     Part::Convex(Convex::try_capsule(0.0, 0.05)?),
-/// ])?;
-/// assert_eq!(dumbbell.parts().len(), 3);
-/// assert!(dumbbell.reach() >= 1.3);
-/// assert_eq!(Compound::<f64>::try_new(vec![]).err(), Some(InputError::EmptyCompound));
-/// # Ok::<(), InputError>(())
-/// ```
-#[derive(Clone, Debug)]
-pub struct Compound<'a, T> {
-    parts: Vec<Part<'a, T>>,
-    reach: T,
-}
-
-impl<'a, T: Float> Compound<'a, T> {
-    /// The compound of `parts`.
-    ///
-    /// # Errors
-    /// [`InputError::EmptyCompound`] for no part; [`InputError::TooLarge`]
-    /// with [`Quantity::Radius`] when its reach overflows the range.
-    pub fn try_new(parts: Vec<Part<'a, T>>) -> Result<Self, InputError> {
-        if parts.is_empty() {
-            return Err(InputError::EmptyCompound);
+impl<'a, T: Float> CompoundPair<'a, T> {
+    /// The pair of `a` and `b`, either or both compounds.
+    pub(crate) fn new(a: Shape<'a, T>, b: Shape<'a, T>) -> Self {
+        Self {
+            a,
+            b,
+            ws: MeshWorkspace::new(),
+            work: Work::ZERO,
         }
-        let mut reach = T::ZERO;
-        for p in &parts {
-            let r = match p {
-                Part::Convex(c) => c.reach(),
-                Part::Mesh(tree) => {
-                    sum_up(tree.root_ball().centre_norm_up(), tree.root_ball().radius())
+    }
+
+    /// With the scratch space `ws` for its parts' mesh pairs.
+    pub(crate) fn with_workspace(self, ws: MeshWorkspace<T>) -> Self {
+        Self { ws, ..self }
+    }
+
+    /// The scratch space.
+    pub(crate) fn into_workspace(self) -> MeshWorkspace<T> {
+        self.ws
+    }
+}
+
+impl<T: Float> CaStep<T> for CompoundPair<'_, T> {
+    fn step(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> StepResult<T> {
+        let mut used = Work::ZERO;
+        let mut advance: Option<Advance<T>> = None;
+        let mut touching: Option<(Witness<T>, Option<Direction<T>>)> = None;
+        let mut limit: Option<T> = None;
+        for i in 0..self.a.part_count() {
+            for j in 0..self.b.part_count() {
+                let Ok(pair) = AnyPair::try_new(self.a.part(i), self.b.part(j)) else {
+                    continue;
+                };
+                let mut pair = pair.with_workspace(core::mem::take(&mut self.ws));
+                let budget = params.work_budget.saturating_sub(used);
+                let r = pair.step(t, a, b, &params.with_work_budget(budget));
+                let w = pair.work();
+                used = Work::new(
+                    used.node_pairs + w.node_pairs,
+                    used.triangle_pairs + w.triangle_pairs,
+                );
+                self.work = Work::new(
+                    self.work.node_pairs + w.node_pairs,
+                    self.work.triangle_pairs + w.triangle_pairs,
+                );
+                self.ws = pair.into_workspace();
+                match r {
+                    StepResult::Touching { witness, normal } => {
+                        if touching.is_none_or(|(w0, _)| witness.distance < w0.distance) {
+                            touching = Some((witness, normal));
+                        }
+                    }
+                    StepResult::WorkLimit if touching.is_none() => return StepResult::WorkLimit,
+                    StepResult::WorkLimit => {}
+                    StepResult::PrecisionLimit { resolution } => {
+                        limit = Some(limit.map_or(resolution, |r| r.max_nan(resolution)));
+                    }
+                    StepResult::Advance {
+                        step,
+                        witness,
+                        normal,
+                    } => {
+                        if advance.is_none_or(|(s, _, _)| step < s) {
+                            advance = Some((step, witness, normal));
+                        }
+                    }
                 }
-            };
-            reach = reach.max_nan(r);
+            }
         }
-        if reach > T::MAX_INPUT || reach.is_nan() {
-            return Err(InputError::TooLarge(Quantity::Radius));
+        if let Some((witness, normal)) = touching {
+            return StepResult::Touching { witness, normal };
         }
-        Ok(Self { parts, reach })
+        if let Some(resolution) = limit {
+            return StepResult::PrecisionLimit { resolution };
+        }
+        let (step, witness, normal) = advance.unwrap_or((T::ZERO, None, None));
+        StepResult::Advance {
+            step,
+            witness,
+            normal,
+        }
     }
 
-    /// The parts.
-    #[must_use]
-    pub fn parts(&self) -> &[Part<'a, T>] {
-        &self.parts
+    fn work(&self) -> Work {
+        self.work
     }
 
-    /// An upper bound of the distance from the body origin of every point of
-    /// every part.
-    #[must_use]
-    pub const fn reach(&self) -> T {
-        self.reach
-    }
-
-    /// The ball about the body origin of radius [`reach`](Self::reach).
-    ///
-    /// # Errors
-    /// None for a compound made by [`try_new`](Self::try_new).
-    pub fn bounding_ball(&self) -> Result<BoundingBall<T>, InputError> {
-        BoundingBall::try_new([T::ZERO; 3], self.reach)
+    fn check_motions(&self, a: &RigidMotion<T>, b: &RigidMotion<T>) -> Result<(), CaError> {
+        for i in 0..self.a.part_count() {
+            for j in 0..self.b.part_count() {
+                AnyPair::try_new(self.a.part(i), self.b.part(j))?.check_motions(a, b)?;
+            }
+        }
+        Ok(())
     }
 }

@@ -19,30 +19,47 @@
 //! * [`CaParams`] holds the tolerances, the iteration limit and the bound
 //!   choice ([`BoundChoice`]).
 
+// The vocabulary: the shape of a body, whatever its kind.
 #[cfg(feature = "alloc")]
-mod any;
-mod balls;
+mod shape;
+// The one dispatch over pairs of kinds.
 #[cfg(feature = "alloc")]
-mod compound;
-mod convex;
+mod dispatch;
+// The loop, its parameters and its answer.
 mod driver;
-mod half_space;
-#[cfg(feature = "alloc")]
-mod mesh;
 mod outcome;
 mod params;
-mod shapes;
+// One stepper per pair of kinds, each file named by the pair it serves.
+mod ball_ball;
+#[cfg(feature = "alloc")]
+mod compound;
+mod convex_convex;
+mod convex_half_space;
+#[cfg(feature = "alloc")]
+mod mesh;
+mod vertex_set_vertex_set;
 
+pub use ball_ball::BallPair;
+pub use convex_convex::ConvexPair;
 #[cfg(feature = "alloc")]
-pub use any::{AnyPair, Shape};
-pub use balls::BallPair;
-#[cfg(feature = "alloc")]
-pub use compound::{Compound, Part};
-pub use convex::{ConvexPair, GjkProximity, Proximity};
+pub use dispatch::AnyPair;
+/// The stepper of two [`Convex`](crate::Convex) shapes, under its old name.
+#[deprecated(
+    since = "0.1.0",
+    note = "renamed `ConvexPair` (the pair of two `Convex` shapes)"
+)]
+pub type ShapePair<'a, T> = ConvexPair<'a, T>;
+pub use convex_half_space::HalfSpacePair;
 pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};
-pub use half_space::HalfSpacePair;
 #[cfg(feature = "alloc")]
-pub use mesh::{MeshPair, MeshShapePair, MeshWorkspace, TraversalStats};
+pub use mesh::{MeshConvexPair, MeshPair, MeshWorkspace, TraversalStats};
+/// The stepper of a mesh against a convex shape or a half-space, under its
+/// old name.
+#[cfg(feature = "alloc")]
+#[deprecated(since = "0.1.0", note = "renamed `MeshConvexPair`")]
+pub type MeshShapePair<'a, T> = MeshConvexPair<'a, T>;
 pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness, Work};
 pub use params::{BoundChoice, CaError, CaParams, MeshParams, Parameter, WitnessSearch};
-pub use shapes::ShapePair;
+#[cfg(feature = "alloc")]
+pub use shape::{Compound, Part, Shape, ShapeKind};
+pub use vertex_set_vertex_set::{GjkProximity, Proximity, VertexSetPair};

@@ -5,6 +5,6 @@ pub(crate) mod direction;
 pub(crate) mod isometry;
 pub(crate) mod point;
 pub(crate) mod pose;
-pub(crate) mod quaternion;
 pub(crate) mod rotation;
+pub(crate) mod rotation_plane;
 pub(crate) mod vec3;

@@ -2,7 +2,7 @@
 
 use crate::error::{check_components, InputError, Quantity};
 use crate::math::pose::mat_mul;
-use crate::math::rotation::rotate_about_axis;
+use crate::math::rotation_plane::rotate_about_axis;
 use crate::rounding::two_sum;
 use crate::{BodyPoint, Direction, Float, Isometry, Point3, Pose, Rotation, TimeInterval, Vec3};
 

@@ -28,14 +28,18 @@
 //! Every skip is counted in [`SceneStats`].
 //!
 //! This module is the crate's scene *query*; the built-in test *bodies*
-//! (torus knots, tori, boards) are in `scenes` (feature `scenes`).
+//! (torus knots, tori, boards) are in `bodies` (feature `bodies`).
 
 mod body;
 mod broad;
+mod narrow;
+mod params;
 mod query;
+mod report;
+mod swept_box;
 
-pub use body::{BodyShape, Groups, SceneBody, ShapeKind};
-pub use broad::SweptBox;
-pub use query::{
-    PairReport, Scene, SceneParams, SceneQueryError, SceneReport, SceneStats, SceneWorkspace,
-};
+pub use body::{Groups, SceneBody};
+pub use params::{SceneParams, SceneQueryError};
+pub use query::Scene;
+pub use report::{PairReport, SceneReport, SceneStats, SceneWorkspace};
+pub use swept_box::SweptBox;

@@ -15,8 +15,8 @@ extern crate std;
 use std::vec::Vec;
 
 use super::toi::{fly_by, random_rotation, reach, rotate_mesh, FlyBy, Rng};
+use crate::bodies::TorusKnotSize;
 use crate::ca::{time_of_impact, BoundChoice, CaParams, CaReport, MeshPair, TraversalStats};
-use crate::scenes::TorusKnotSize;
 use crate::{BallTree, TriMesh};
 
 /// The seed of the orientations and the queries (the erratum's date).

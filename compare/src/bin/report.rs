@@ -37,9 +37,9 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use indicatif::{ProgressBar, ProgressStyle};
+use motion_bound::bodies::TorusKnotSize;
 use motion_bound::ca::{time_of_impact, BoundChoice, CaParams, CaStep, MeshPair, StepResult, Work};
 use motion_bound::reference::{exact, exact_sup_signed};
-use motion_bound::scenes::TorusKnotSize;
 use motion_bound::testkit::ground_truth::{intersect_at, MeshRef};
 use motion_bound::testkit::random_blob;
 use motion_bound::testkit::table1::KnotScene;
@@ -667,7 +667,7 @@ fn main() {
     let armadillo = shipped("armadillo.off.gz");
     // The thin board as a modeller gives it: 12 triangles (the queries take
     // its hierarchy of pieces against the armadillo).
-    let board = motion_bound::scenes::board(1.0, 1.0, 0.01).expect("a valid board");
+    let board = motion_bound::bodies::board(1.0, 1.0, 0.01).expect("a valid board");
     let bunny = shipped("bunny-npm-3674.obj.gz");
     let mut scenes: Vec<ToiScene> = knot_sizes.iter().map(|&s| knot_scene(s, q)).collect();
     scenes.push(pair_scene(

@@ -45,8 +45,8 @@
 use std::process::ExitCode;
 use std::time::Instant;
 
+use motion_bound::bodies::TorusKnotSize;
 use motion_bound::ca::{BoundChoice, CaOutcome, ContactCriterion, TraversalStats};
-use motion_bound::scenes::TorusKnotSize;
 use motion_bound::testkit::ground_truth::{first_sampled_contact, MeshRef};
 
 use motion_bound::testkit::table1::{

@@ -22,8 +22,8 @@ use crate::Float;
 ///
 /// ```
 /// use motion_bound::ca::{time_of_impact, CaParams, MeshPair, MeshWorkspace};
-/// use motion_bound::{scenes, BallTree, RigidMotion};
-/// let ring = scenes::torus::<f64>(0.5, 0.1, 16, 8)?;
+/// use motion_bound::{bodies, BallTree, RigidMotion};
+/// let ring = bodies::torus::<f64>(0.5, 0.1, 16, 8)?;
 /// let tree = BallTree::try_from_mesh(&ring)?;
 /// let mut workspace = MeshWorkspace::new();
 /// for frame in 0..3 {

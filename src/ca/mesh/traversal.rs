@@ -2,8 +2,8 @@
 //! exact measurement of a triangle pair (`proofs/09-ca-toi.md`, Lemmas 9.1
 //! and 9.2).
 
+use super::mesh_mesh::{Found, MeshPair};
 use super::queue::NodeStep;
-use super::{Found, MeshPair};
 use crate::bvh::{Hierarchy, Leaf};
 use crate::ca::driver::{gap_step, placement_error};
 use crate::ca::Witness;

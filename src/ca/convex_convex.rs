@@ -23,7 +23,7 @@ use crate::{Convex, Direction, Float, Point3, Pose, PreparedMotion, Vec3};
 /// contact, never for soundness.
 ///
 /// ```
-/// use motion_bound::ca::{time_of_impact, CaParams, ShapePair};
+/// use motion_bound::ca::{time_of_impact, CaParams, ConvexPair};
 /// use motion_bound::{Convex, RigidMotion};
 /// // A capsule falls on a cuboid: its lower end (y = -0.5 - 0.25) meets the
 /// // box's top (y = 0.5) after 2 - 0.75 - 0.5 = 0.75 at speed 2.
@@ -31,18 +31,18 @@ use crate::{Convex, Direction, Float, Point3, Pose, PreparedMotion, Vec3};
 /// let slab = Convex::try_cuboid([2.0, 0.5, 2.0])?;
 /// let a = RigidMotion::try_from_arrays([0.0, 2.0, 0.0], [0.0, -2.0, 0.0], [0.0; 3])?;
 /// let b = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3])?;
-/// let report = time_of_impact(&mut ShapePair::new(capsule, slab), &a, &b, &CaParams::default())?;
+/// let report = time_of_impact(&mut ConvexPair::new(capsule, slab), &a, &b, &CaParams::default())?;
 /// let t = report.outcome.contact().expect("they touch").time;
 /// assert!(t <= 0.375 && t > 0.375 - 1e-4, "t = {t}");
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Clone, Copy, Debug)]
-pub struct ShapePair<'a, T> {
+pub struct ConvexPair<'a, T> {
     a: Convex<'a, T>,
     b: Convex<'a, T>,
 }
 
-impl<'a, T: Float> ShapePair<'a, T> {
+impl<'a, T: Float> ConvexPair<'a, T> {
     /// The pair of shapes `a` and `b`, each in its body frame.
     #[must_use]
     pub const fn new(a: Convex<'a, T>, b: Convex<'a, T>) -> Self {
@@ -105,7 +105,7 @@ pub(crate) fn certified_gap<T: Float>(
     gap_down(lower_b - upper_a, err_a, err_b, reach)
 }
 
-impl<T: Float> CaStep<T> for ShapePair<'_, T> {
+impl<T: Float> CaStep<T> for ConvexPair<'_, T> {
     fn step(
         &mut self,
         t: T,

@@ -1,13 +1,14 @@
 //! Conservative advancement of a triangle mesh against a convex shape or a
 //! half-space: one hierarchy descended against one volume.
 
+use super::mesh_mesh::Found;
 use super::queue::{NodeStep, Pending, Queued};
 use super::traversal::{Placed, PlacedNode};
-use super::{Found, MeshWorkspace, TraversalStats};
+use super::{MeshWorkspace, TraversalStats};
 use crate::bvh::{BallTree, Hierarchy};
+use crate::ca::convex_convex::PlacedCore;
+use crate::ca::convex_half_space::check_half_space;
 use crate::ca::driver::placement_error;
-use crate::ca::half_space::check_half_space;
-use crate::ca::shapes::PlacedCore;
 use crate::ca::{CaError, CaParams, CaStep, StepResult, Witness, WitnessSearch, Work};
 use crate::geometry::gjk::{gjk_distance, GjkParams};
 use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down, sum_up};
@@ -31,34 +32,34 @@ enum Other<'a, T> {
 /// (`proofs/12-shapes.md`, Lemma 12.4).
 ///
 /// ```
-/// use motion_bound::ca::{time_of_impact, CaParams, MeshShapePair};
-/// use motion_bound::{scenes, BallTree, Convex, HalfSpace, RigidMotion, Vec3};
-/// let ring = BallTree::try_from_mesh(&scenes::torus::<f64>(0.5, 0.1, 24, 8)?)?;
+/// use motion_bound::ca::{time_of_impact, CaParams, MeshConvexPair};
+/// use motion_bound::{bodies, BallTree, Convex, HalfSpace, RigidMotion, Vec3};
+/// let ring = BallTree::try_from_mesh(&bodies::torus::<f64>(0.5, 0.1, 24, 8)?)?;
 /// // A ball falls through the ring's hole: it never touches the ring.
 /// let ball = Convex::try_ball(0.2)?;
 /// let ring_still = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3])?;
 /// let falling = RigidMotion::try_from_arrays([0.0, 0.0, 1.0], [0.0, 0.0, -2.0], [0.0; 3])?;
-/// let report = time_of_impact(&mut MeshShapePair::new(&ring, ball), &ring_still, &falling, &CaParams::default())?;
+/// let report = time_of_impact(&mut MeshConvexPair::new(&ring, ball), &ring_still, &falling, &CaParams::default())?;
 /// assert!(report.outcome.contact().is_none());
 /// // The ring dropped on the ground lands when its lowest point (0.1 below
 /// // its centre, lying flat) reaches it.
 /// let ground = HalfSpace::try_new(Vec3::new(0.0, 0.0, 1.0))?;
 /// let dropped = RigidMotion::try_from_arrays([0.0, 0.0, 1.0], [0.0, 0.0, -2.0], [0.0; 3])?;
 /// let still = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3])?;
-/// let report = time_of_impact(&mut MeshShapePair::with_half_space(&ring, ground), &dropped, &still, &CaParams::default())?;
+/// let report = time_of_impact(&mut MeshConvexPair::with_half_space(&ring, ground), &dropped, &still, &CaParams::default())?;
 /// let t = report.outcome.contact().expect("it lands").time;
 /// assert!(t <= 0.45 && t > 0.45 - 1e-4, "t = {t}");
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug)]
-pub struct MeshShapePair<'a, T> {
+pub struct MeshConvexPair<'a, T> {
     mesh: &'a Hierarchy<T>,
     other: Other<'a, T>,
     ws: MeshWorkspace<T>,
     stats: TraversalStats,
 }
 
-impl<'a, T: Float> MeshShapePair<'a, T> {
+impl<'a, T: Float> MeshConvexPair<'a, T> {
     /// The mesh `mesh` (body A) against the convex shape `shape` (body B).
     #[must_use]
     pub fn new(mesh: &'a BallTree<T>, shape: Convex<'a, T>) -> Self {
@@ -135,7 +136,7 @@ impl<T: Float> Side<'_, '_, T> {
     }
 }
 
-impl<T: Float> CaStep<T> for MeshShapePair<'_, T> {
+impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
     fn check_motions(&self, _a: &RigidMotion<T>, b: &RigidMotion<T>) -> Result<(), CaError> {
         match self.other {
             Other::Plane(_) => check_half_space(b),
@@ -287,7 +288,7 @@ impl<T: Float> CaStep<T> for MeshShapePair<'_, T> {
     }
 }
 
-impl<T: Float> MeshShapePair<'_, T> {
+impl<T: Float> MeshConvexPair<'_, T> {
     /// A mesh node against B (Lemma 12.4): the gap between the node's box
     /// and B along the line from the box's centre to B's origin and along
     /// the line to B's point nearest it on that line (or along a plane's

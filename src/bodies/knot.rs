@@ -3,7 +3,7 @@
 use alloc::vec::Vec;
 use core::f64::consts::PI;
 
-use crate::scenes::{grid_size, positive, sweep_tube, SceneError};
+use crate::bodies::{grid_size, positive, sweep_tube, SceneError};
 use crate::{Float, TriMesh, Vec3};
 
 /// A `(p, q)` torus knot swept by a circular tube.
@@ -275,11 +275,11 @@ impl TorusKnot {
 /// As [`TorusKnot::mesh`].
 ///
 /// ```
-/// use motion_bound::scenes::torus_knot;
+/// use motion_bound::bodies::torus_knot;
 /// let k = torus_knot::<f64>(3, 5, 300, 12, 1.0, 0.4, 0.1)?;
 /// assert_eq!(k.triangle_count(), 2 * 300 * 12);
 /// assert!(k.is_closed());
-/// # Ok::<(), motion_bound::scenes::SceneError>(())
+/// # Ok::<(), motion_bound::bodies::SceneError>(())
 /// ```
 pub fn torus_knot<T: Float>(
     p: u32,
@@ -331,8 +331,8 @@ fn cos(x: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::{TorusKnot, TorusKnotSize};
-    use crate::scenes::checks::{assert_solid, euler};
-    use crate::scenes::SceneError;
+    use crate::bodies::checks::{assert_solid, euler};
+    use crate::bodies::SceneError;
     use crate::Vec3;
 
     #[test]

@@ -4,7 +4,7 @@ use core::fmt;
 
 use crate::MeshError;
 
-/// Why a generator in [`scenes`](crate::scenes) refused its parameters.
+/// Why a generator in [`scenes`](crate::bodies) refused its parameters.
 #[derive(Clone, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub enum SceneError {

@@ -3,7 +3,7 @@
 use alloc::collections::BTreeMap;
 use alloc::vec::Vec;
 
-use crate::scenes::{positive, to_t, SceneError};
+use crate::bodies::{positive, to_t, SceneError};
 use crate::{Float, TriMesh, Vec3};
 
 /// The box `[-x/2, x/2] x [-y/2, y/2] x [-z/2, z/2]` for `size = [x, y, z]`:
@@ -14,10 +14,10 @@ use crate::{Float, TriMesh, Vec3};
 /// [`SceneError::Mesh`] if it is too large for `T`.
 ///
 /// ```
-/// use motion_bound::scenes::cuboid;
+/// use motion_bound::bodies::cuboid;
 /// let b = cuboid::<f64>([1.0, 2.0, 3.0])?;
 /// assert!((b.signed_volume() - 6.0).abs() < 1e-12);
-/// # Ok::<(), motion_bound::scenes::SceneError>(())
+/// # Ok::<(), motion_bound::bodies::SceneError>(())
 /// ```
 pub fn cuboid<T: Float>(size: [f64; 3]) -> Result<TriMesh<T>, SceneError> {
     let h = [
@@ -70,11 +70,11 @@ pub fn board<T: Float>(width: f64, height: f64, thickness: f64) -> Result<TriMes
 /// cells a side.
 ///
 /// ```
-/// use motion_bound::scenes::tessellated_board;
+/// use motion_bound::bodies::tessellated_board;
 /// let b = tessellated_board::<f64>(2.0, 2.0, 0.002, 8)?;
 /// assert_eq!(b.triangle_count(), 4 * 64 + 8 * 8);
 /// assert!((b.signed_volume() - 2.0 * 2.0 * 0.002).abs() < 1e-12);
-/// # Ok::<(), motion_bound::scenes::SceneError>(())
+/// # Ok::<(), motion_bound::bodies::SceneError>(())
 /// ```
 pub fn tessellated_board<T: Float>(
     width: f64,
@@ -149,10 +149,10 @@ pub fn tessellated_board<T: Float>(
 /// [`SceneError::Mesh`] if it is too large for `T`.
 ///
 /// ```
-/// use motion_bound::scenes::icosphere;
+/// use motion_bound::bodies::icosphere;
 /// let s = icosphere::<f32>(2.0, 3)?;
 /// assert_eq!((s.vertex_count(), s.triangle_count()), (642, 1280));
-/// # Ok::<(), motion_bound::scenes::SceneError>(())
+/// # Ok::<(), motion_bound::bodies::SceneError>(())
 /// ```
 pub fn icosphere<T: Float>(radius: f64, subdivisions: u32) -> Result<TriMesh<T>, SceneError> {
     let radius = positive(radius, "radius")?;
@@ -232,8 +232,8 @@ fn unit(p: Vec3<f64>) -> Vec3<f64> {
 #[cfg(test)]
 mod tests {
     use super::{board, cuboid, icosphere};
-    use crate::scenes::checks::{assert_solid, euler};
-    use crate::scenes::SceneError;
+    use crate::bodies::checks::{assert_solid, euler};
+    use crate::bodies::SceneError;
 
     #[test]
     fn convex_solids_are_closed_outward_spheres() {

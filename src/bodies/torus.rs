@@ -3,7 +3,7 @@
 use alloc::vec::Vec;
 use core::f64::consts::PI;
 
-use crate::scenes::{grid_size, positive, sweep_tube, SceneError};
+use crate::bodies::{grid_size, positive, sweep_tube, SceneError};
 use crate::{Float, TriMesh, Vec3};
 
 /// A torus about the `z` axis, centred at the origin: the circle of radius
@@ -18,13 +18,13 @@ use crate::{Float, TriMesh, Vec3};
 /// [`SceneError::Mesh`] if it is too large for `T`.
 ///
 /// ```
-/// use motion_bound::scenes::torus;
+/// use motion_bound::bodies::torus;
 /// let ring = torus::<f64>(1.0, 0.25, 48, 16)?;
 /// assert_eq!(ring.triangle_count(), 2 * 48 * 16);
 /// // Volume 2 pi^2 R r^2, approached from below by the inscribed polyhedron.
 /// let exact = 2.0 * std::f64::consts::PI.powi(2) * 1.0 * 0.25f64.powi(2);
 /// assert!(ring.signed_volume() < exact && ring.signed_volume() > 0.97 * exact);
-/// # Ok::<(), motion_bound::scenes::SceneError>(())
+/// # Ok::<(), motion_bound::bodies::SceneError>(())
 /// ```
 pub fn torus<T: Float>(
     major_radius: f64,
@@ -55,8 +55,8 @@ pub fn torus<T: Float>(
 #[cfg(test)]
 mod tests {
     use super::torus;
-    use crate::scenes::checks::{assert_solid, euler};
-    use crate::scenes::SceneError;
+    use crate::bodies::checks::{assert_solid, euler};
+    use crate::bodies::SceneError;
 
     #[test]
     fn tori_are_closed_outward_genus_one() {

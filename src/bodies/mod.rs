@@ -11,7 +11,7 @@
 //! to `T`.
 //!
 //! ```
-//! use motion_bound::scenes::{board, TorusKnotSize};
+//! use motion_bound::bodies::{board, TorusKnotSize};
 //!
 //! let knot = TorusKnotSize::K2_8.mesh::<f32>()?;
 //! assert_eq!(knot.triangle_count(), 2_800);
@@ -19,7 +19,7 @@
 //!
 //! let plank = board::<f64>(2.0, 1.0, 0.05)?;
 //! assert_eq!(plank.triangle_count(), 12);
-//! # Ok::<(), motion_bound::scenes::SceneError>(())
+//! # Ok::<(), motion_bound::bodies::SceneError>(())
 //! ```
 
 mod error;

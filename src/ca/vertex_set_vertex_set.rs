@@ -34,7 +34,7 @@ impl<T, F: FnMut(&Pose<T>, &Pose<T>) -> Option<Witness<T>>> Proximity<T> for F {
 /// (closing-rate) bounds unless [`CaParams::one_sided`] is off.
 ///
 /// ```
-/// use motion_bound::ca::{time_of_impact, CaParams, ConvexPair, Witness};
+/// use motion_bound::ca::{time_of_impact, CaParams, VertexSetPair, Witness};
 /// use motion_bound::{Point3, Pose, RigidMotion, Vec3, VertexSet};
 /// // Two unit cubes' corners; a crude oracle: the closest pair of corners
 /// // (exact for these face-to-face cubes).
@@ -58,7 +58,7 @@ impl<T, F: FnMut(&Pose<T>, &Pose<T>) -> Option<Witness<T>>> Proximity<T> for F {
 /// };
 /// let a = RigidMotion::try_from_arrays([0.0; 3], [4.0, 0.0, 0.0], [0.0; 3])?;
 /// let b = RigidMotion::try_from_arrays([3.0, 0.0, 0.0], [0.0; 3], [0.0; 3])?;
-/// let mut pair = ConvexPair::new(body, body, oracle);
+/// let mut pair = VertexSetPair::new(body, body, oracle);
 /// let report = time_of_impact(&mut pair, &a, &b, &CaParams::default())?;
 /// // The faces meet at t = 2/4.
 /// let t = report.outcome.contact().unwrap().time;
@@ -66,7 +66,7 @@ impl<T, F: FnMut(&Pose<T>, &Pose<T>) -> Option<Witness<T>>> Proximity<T> for F {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug)]
-pub struct ConvexPair<'a, T, P> {
+pub struct VertexSetPair<'a, T, P> {
     a: VertexSet<'a, T>,
     b: VertexSet<'a, T>,
     oracle: P,
@@ -77,7 +77,7 @@ pub struct ConvexPair<'a, T, P> {
     trees: [Option<&'a crate::VertexTree<T>>; 2],
 }
 
-impl<'a, T: Float, P: Proximity<T>> ConvexPair<'a, T, P> {
+impl<'a, T: Float, P: Proximity<T>> VertexSetPair<'a, T, P> {
     /// The pair of convex bodies `a`, `b` (vertices relative to each body's
     /// rotation centre) with the distance oracle `oracle`.
     #[must_use]
@@ -137,7 +137,7 @@ type TreeRef<'a, T> = Option<&'a crate::VertexTree<T>>;
 #[cfg(not(feature = "alloc"))]
 type TreeRef<'a, T> = Option<&'a core::marker::PhantomData<T>>;
 
-impl<'a, T: Float, P> ConvexPair<'a, T, P> {
+impl<'a, T: Float, P> VertexSetPair<'a, T, P> {
     #[cfg(feature = "alloc")]
     fn trees(&self) -> [TreeRef<'a, T>; 2] {
         self.trees
@@ -189,7 +189,7 @@ fn extent<T: Float>(pose: &Pose<T>, body: &VertexSet<'_, T>, n: Vec3<T>, max: bo
     e
 }
 
-impl<T: Float, P: Proximity<T>> CaStep<T> for ConvexPair<'_, T, P> {
+impl<T: Float, P: Proximity<T>> CaStep<T> for VertexSetPair<'_, T, P> {
     fn step(
         &mut self,
         t: T,
@@ -306,18 +306,18 @@ impl<T: Float> Proximity<T> for GjkProximity<'_, T> {
     }
 }
 
-impl<'a, T: Float> ConvexPair<'a, T, GjkProximity<'a, T>> {
+impl<'a, T: Float> VertexSetPair<'a, T, GjkProximity<'a, T>> {
     /// The pair of convex bodies `a`, `b` with GJK distances: conservative
     /// advancement of convex polytopes out of the box.
     ///
     /// ```
-    /// use motion_bound::ca::{time_of_impact, CaParams, ConvexPair};
+    /// use motion_bound::ca::{time_of_impact, CaParams, VertexSetPair};
     /// use motion_bound::{RigidMotion, VertexSet};
     /// let tet = [[1.0, 1.0, 1.0], [1.0, -1.0, -1.0], [-1.0, 1.0, -1.0], [-1.0, -1.0, 1.0]];
     /// let body = VertexSet::try_new(&tet)?;
     /// let a = RigidMotion::try_from_arrays([-4.0, 0.0, 0.0], [8.0, 0.0, 0.0], [0.0, 3.0, 1.0])?;
     /// let b = RigidMotion::try_from_arrays([4.0, 0.0, 0.0], [-2.0, 0.0, 0.0], [2.0, 0.0, 0.0])?;
-    /// let report = time_of_impact(&mut ConvexPair::with_gjk(body, body), &a, &b, &CaParams::default())?;
+    /// let report = time_of_impact(&mut VertexSetPair::with_gjk(body, body), &a, &b, &CaParams::default())?;
     /// let t = report.outcome.contact().expect("they collide").time;
     /// assert!(t > 0.0 && t < 0.8);
     /// # Ok::<(), Box<dyn std::error::Error>>(())
