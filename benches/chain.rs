@@ -331,7 +331,7 @@ fn main() {
     let (r_min, r_max, lead) = mesh
         .vertices()
         .iter()
-        .map(|v| poses0[hand].transform_point(Vec3::from_array(*v)))
+        .map(|v| poses0[hand].transform_point(*v))
         .fold((f64::INFINITY, 0.0f64, -f64::INFINITY), |(lo, hi, a), p| {
             let r = (p.x * p.x + p.y * p.y).sqrt();
             (lo.min(r), hi.max(r), a.max(p.y.atan2(p.x)))
@@ -369,7 +369,7 @@ fn main() {
         let rigid = hand_motion
             .point_at(BodyPoint::new(v[0], v[1], v[2]), 1.0)
             .to_vec3();
-        let arm = poses1[hand].transform_point(Vec3::from_array(*v));
+        let arm = poses1[hand].transform_point(*v);
         assert!(
             (rigid - arm).length() < 1e-9,
             "the rigid motion ends where the hand does"

@@ -133,6 +133,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let (mut ours_s, mut truth_s) = (0.0f64, 0.0f64);
     let mut disc = [(0.005, 0usize, 0.0f64), (0.05, 0, 0.0)];
     let mut iterations = 0usize;
+    // The work and outcomes, summed, to compare two builds.
+    let (mut node_pairs, mut contacts, mut separations, mut time_sum) =
+        (0usize, 0usize, 0usize, 0.0);
     for s in 0..segments {
         let q0 = sample_free(&mut rng)?;
         let q1 = sample_free(&mut rng)?;
@@ -140,6 +143,15 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         let report = scene.check_segment(&q0, &q1)?;
         ours_s += start.elapsed().as_secs_f64();
         iterations += report.stats.iterations;
+        node_pairs += report.stats.node_pairs;
+        match report.outcome {
+            SegmentOutcome::Contact(c) => {
+                contacts += 1;
+                time_sum += c.time;
+            }
+            SegmentOutcome::Separated => separations += 1,
+            _ => {}
+        }
         let start = Instant::now();
         let sampled = truth.sample(&q0, &q1, 1e-4);
         truth_s += start.elapsed().as_secs_f64();
@@ -200,6 +212,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "ours: {:.2} iterations per segment; undecided {undecided}; contacts reported beyond the contact distance {early_far}; truth ms per segment {:.3}",
         iterations as f64 / n,
         truth_s / n * 1e3
+    );
+    println!(
+        "work: iterations {iterations}, node pairs {node_pairs}, contacts {contacts}, separations {separations}, contact times' sum {time_sum:.17e}"
     );
     println!(
         "segments {segments}, colliding {colliding}, missed {missed}, late {late}, mean ms per segment {:.4}, discrete 0.005: missed {} ms {:.4}, discrete 0.05: missed {} ms {:.4}",

@@ -336,6 +336,9 @@ fn main() {
         (0u64, 0, 0, 0, 0, 0);
     let mut kinds = BTreeSet::new();
     let mut seconds = 0.0;
+    // The work and outcomes, summed, to compare two builds (the times' sum
+    // in full precision: equal sums of equal counts mean equal answers).
+    let (mut iterations, mut node_pairs, mut separations, mut time_sum) = (0u64, 0u64, 0u64, 0.0);
     for f in 0..FRAMES {
         let motions: Vec<RigidMotion<f64>> = bodies.iter().map(|b| b.motion(frame)).collect();
         let mut scene = Scene::try_new(frame).expect("scene");
@@ -358,6 +361,10 @@ fn main() {
             };
             kinds.insert((ka, kb));
             let reported = p.report.outcome.earliest_possible_contact();
+            iterations += u64::from(p.report.iterations);
+            node_pairs += p.node_pairs;
+            separations += u64::from(p.report.outcome == motion_bound::ca::CaOutcome::Separated);
+            time_sum += reported.unwrap_or(0.0);
             if let Some(c) = p.report.outcome.contact() {
                 contacts += 1;
                 let n = c.normal.map_or(b.x - a.x, motion_bound::Direction::get);
@@ -442,6 +449,9 @@ fn main() {
     }
     println!(
         "{contacts} contacts; ground truth on {checked} tested pairs with a sampled contact and {culled_checked} close culled pairs; pair kinds: {kinds:?}"
+    );
+    println!(
+        "work: iterations {iterations}, node pairs {node_pairs}, contacts {contacts}, separations {separations}, contact times' sum {time_sum:.17e}"
     );
     println!(
         "frames {FRAMES}, pairs {pairs}, pair kinds {}, missed {missed}, late {late}, mean ms per query {:.4}",

@@ -764,7 +764,7 @@ fn placement<T: Float>(seed: u64) -> Result<f64, String> {
             points.extend(mesh.vertices().iter().copied());
         }
         for p in points {
-            let got = widen(pose.transform_point(Vec3::from_array(p)).to_array());
+            let got = widen(pose.transform_point(p).to_array());
             let exact = add(mat_vec(&placed.rot[l], widen(p)), placed.pos[l]);
             let err = norm(sub(got, exact));
             let tol = dd((1.0 + norm(exact).to_f64()) * 2f64.powi(-86));

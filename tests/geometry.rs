@@ -599,9 +599,7 @@ fn placed_dot_dd(p: &Pose<f64>, r: [f64; 3], n: [f64; 3]) -> DoubleDouble {
 
 /// The world vertices in `f64` (for the brute force; rounding ~1e-16).
 fn world(p: &Pose<f64>, v: &[[f64; 3]]) -> Vec<[f64; 3]> {
-    v.iter()
-        .map(|r| p.transform_point(Vec3::from_array(*r)).to_array())
-        .collect()
+    v.iter().map(|r| p.transform_point(*r).to_array()).collect()
 }
 
 /// Brute force: the minimum of `triangle_triangle` over all vertex triples

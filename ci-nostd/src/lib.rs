@@ -27,14 +27,14 @@ pub fn time_of_impact(
     xb: [f32; 3],
 ) -> Option<f32> {
     use motion_bound::ca::{self, CaParams, VertexSetPair, Witness};
-    use motion_bound::{Point3, Pose, Vec3};
+    use motion_bound::{Point3, Pose};
     let oracle = |pa: &Pose<f32>, pb: &Pose<f32>| {
         let mut best: Option<Witness<f32>> = None;
         for p in a {
             for q in b {
                 let (x, y) = (
-                    pa.transform_point(Vec3::from_array(*p)),
-                    pb.transform_point(Vec3::from_array(*q)),
+                    pa.transform_point(*p),
+                    pb.transform_point(*q),
                 );
                 let d = (y - x).length();
                 if best.is_none_or(|w| d < w.distance) {

@@ -31,14 +31,8 @@ impl<T: Float> CaStep<T> for BallPair<T> {
         b: &PreparedMotion<T>,
         params: &CaParams<T>,
     ) -> StepResult<T> {
-        let ca = a
-            .motion()
-            .pose_at(t)
-            .transform_point(Vec3::from_array(*self.a.centre()));
-        let cb = b
-            .motion()
-            .pose_at(t)
-            .transform_point(Vec3::from_array(*self.b.centre()));
+        let ca = a.motion().pose_at(t).transform_point(*self.a.centre());
+        let cb = b.motion().pose_at(t).transform_point(*self.b.centre());
         let d = cb - ca;
         let len = d.length();
         let (ra, rb) = (self.a.radius(), self.b.radius());

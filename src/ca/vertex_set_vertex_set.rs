@@ -47,7 +47,7 @@ impl<T, F: FnMut(&Pose<T>, &Pose<T>) -> Option<Witness<T>>> Proximity<T> for F {
 ///     let mut best: Option<Witness<f64>> = None;
 ///     for p in &cube {
 ///         for q in &cube {
-///             let (a, b) = (pa.transform_point(Vec3::from_array(*p)), pb.transform_point(Vec3::from_array(*q)));
+///             let (a, b) = (pa.transform_point(*p), pb.transform_point(*q));
 ///             let d = (b - a).length();
 ///             if best.map_or(true, |w| d < w.distance) {
 ///                 best = Some(Witness::new(d, Point3::from_vec3(a), Point3::from_vec3(b)));
@@ -183,7 +183,7 @@ fn body_speed<T: Float>(
 fn extent<T: Float>(pose: &Pose<T>, body: &VertexSet<'_, T>, n: Vec3<T>, max: bool) -> T {
     let mut e = if max { -T::INFINITY } else { T::INFINITY };
     for r in body.vertices() {
-        let x = pose.transform_point(Vec3::from_array(*r)).dot(n);
+        let x = pose.transform_point(*r).dot(n);
         e = if max { e.max_nan(x) } else { e.min_nan(x) };
     }
     e

@@ -875,7 +875,7 @@ impl<T: Float> ChainScene<T> {
                             &work.errors,
                         );
                         let root = &tree.whole.nodes[0].ball;
-                        let c = m.pose.transform_point(Vec3::from_array(*root.centre()));
+                        let c = m.pose.transform_point(*root.centre());
                         let (_, speed) =
                             m.ball_speed(c, root.radius(), Vec3::new(T::ONE, T::ZERO, T::ZERO));
                         let r = (root.radius() + speed * dt + T::TWO * m.delta)
@@ -896,7 +896,7 @@ impl<T: Float> ChainScene<T> {
                 let mut lo = Vec3::new(T::INFINITY, T::INFINITY, T::INFINITY).to_array();
                 let mut hi = Vec3::new(-T::INFINITY, -T::INFINITY, -T::INFINITY).to_array();
                 for v in o.mesh.vertices() {
-                    let p = o.pose.transform_point(Vec3::from_array(*v)).to_array();
+                    let p = o.pose.transform_point(*v).to_array();
                     for d in 0..3 {
                         lo[d] = lo[d].min_nan(p[d]);
                         hi[d] = hi[d].max_nan(p[d]);
@@ -1012,8 +1012,8 @@ fn advance<T: Float>(
     stats: &mut ChainStats,
 ) -> Step<T> {
     let (ra0, rb0) = (&ta.nodes[0].ball, &tb.nodes[0].ball);
-    let ca0 = a.pose.transform_point(Vec3::from_array(*ra0.centre()));
-    let cb0 = b.pose.transform_point(Vec3::from_array(*rb0.centre()));
+    let ca0 = a.pose.transform_point(*ra0.centre());
+    let cb0 = b.pose.transform_point(*rb0.centre());
     let x = Vec3::new(T::ONE, T::ZERO, T::ZERO);
     let (_, va) = a.ball_speed(ca0, ra0.radius(), x);
     let (_, vb) = b.ball_speed(cb0, rb0.radius(), x);
@@ -1060,8 +1060,8 @@ fn advance<T: Float>(
             return Step::Advance(floor);
         }
         let (na, nb) = (&ta.nodes[ia as usize], &tb.nodes[ib as usize]);
-        let ca = a.pose.transform_point(Vec3::from_array(*na.ball.centre()));
-        let cb = b.pose.transform_point(Vec3::from_array(*nb.ball.centre()));
+        let ca = a.pose.transform_point(*na.ball.centre());
+        let cb = b.pose.transform_point(*nb.ball.centre());
         let (ra, rb) = (na.ball.radius(), nb.ball.radius());
         let g = ball_gap(ca, ra, cb, rb, a, b);
         if g > T::ZERO {
@@ -1080,12 +1080,8 @@ fn advance<T: Float>(
         match (na.leaf(), nb.leaf()) {
             (Some(la), Some(lb)) => {
                 stats.leaf_pairs += 1;
-                let pa = ta.leaves[la]
-                    .corners
-                    .map(|p| a.pose.transform_point(Vec3::from_array(p)));
-                let pb = tb.leaves[lb]
-                    .corners
-                    .map(|p| b.pose.transform_point(Vec3::from_array(p)));
+                let pa = ta.leaves[la].corners.map(|p| a.pose.transform_point(p));
+                let pb = tb.leaves[lb].corners.map(|p| b.pose.transform_point(p));
                 // The slab gap along the leaf balls' centre line (cheap; the
                 // exact distance's direction would give a longer step).
                 let inflate = ta.leaves[la].inflate + tb.leaves[lb].inflate;
@@ -1134,7 +1130,7 @@ fn push_children<T: Float>(
     on_a: bool,
 ) {
     let d = |i: u32| {
-        let c = pose.transform_point(Vec3::from_array(*children[i as usize].ball.centre()));
+        let c = pose.transform_point(*children[i as usize].ball.centre());
         (c - other).length() - children[i as usize].ball.radius()
     };
     let (near, far) = if d(node.left) <= d(node.right) {
@@ -1205,8 +1201,8 @@ fn min_gap<T: Float>(
     while let Some((ia, ib)) = stack.pop() {
         stats.node_pairs += 1;
         let (na, nb) = (&ta.nodes[ia as usize], &tb.nodes[ib as usize]);
-        let ca = a.pose.transform_point(Vec3::from_array(*na.ball.centre()));
-        let cb = b.pose.transform_point(Vec3::from_array(*nb.ball.centre()));
+        let ca = a.pose.transform_point(*na.ball.centre());
+        let cb = b.pose.transform_point(*nb.ball.centre());
         let (ra, rb) = (na.ball.radius(), nb.ball.radius());
         let g = ball_gap(ca, ra, cb, rb, a, b);
         if g >= best {
@@ -1219,12 +1215,8 @@ fn min_gap<T: Float>(
         match (na.leaf(), nb.leaf()) {
             (Some(la), Some(lb)) => {
                 stats.leaf_pairs += 1;
-                let pa = ta.leaves[la]
-                    .corners
-                    .map(|p| a.pose.transform_point(Vec3::from_array(p)));
-                let pb = tb.leaves[lb]
-                    .corners
-                    .map(|p| b.pose.transform_point(Vec3::from_array(p)));
+                let pa = ta.leaves[la].corners.map(|p| a.pose.transform_point(p));
+                let pb = tb.leaves[lb].corners.map(|p| b.pose.transform_point(p));
                 // A piece's exact points are within `inflate` of its corners' triangle.
                 let inflate =
                     (ta.leaves[la].inflate + tb.leaves[lb].inflate) * (T::ONE + T::UNIT_ROUNDOFF);

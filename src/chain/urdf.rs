@@ -99,10 +99,7 @@ impl<T: Float> Chain<T> {
                     .map_err(|e| err(format_args!("link {:?}: {e}", link.name)))?;
                 let place = pose_of(&c.origin)?;
                 let base = u32::try_from(vertices.len()).map_err(|_| err("too many vertices"))?;
-                vertices.extend(
-                    v.iter()
-                        .map(|p| place.transform_point(Vec3::from_array(*p)).to_array()),
-                );
+                vertices.extend(v.iter().map(|p| place.transform_point(*p).to_array()));
                 triangles.extend(t.iter().map(|tri| tri.map(|i| i + base)));
             }
             let mesh = if triangles.is_empty() {

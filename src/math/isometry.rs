@@ -6,7 +6,9 @@ use crate::{Float, Point3, Pose, Rotation, Vec3};
 
 /// A rigid placement `r |-> Q r + x` of a body frame in the world frame, with
 /// `Q` a [`Rotation`] (a unit quaternion) and `x` where the body frame's
-/// origin goes: a body's pose at one instant.
+/// origin goes: a body's pose at one instant, as a caller gives it (checked
+/// on construction). The crate evaluates it as a [`Pose`] (a matrix) for
+/// its hot loops: [`to_pose`](Self::to_pose).
 ///
 /// ```
 /// use motion_bound::{Isometry, Point3, Rotation, Vec3};
@@ -65,11 +67,12 @@ impl<T: Float> Isometry<T> {
         self.translation
     }
 
-    /// `Q r + x` for a body point `r` (in the body frame).
+    /// `Q r + x` for a body point `r` (in the body frame): a [`Point3`] or
+    /// a vertex as stored, `[T; 3]`.
     #[inline]
     #[must_use]
-    pub fn transform_point(&self, r: Point3<T>) -> Point3<T> {
-        Point3::from_array((self.rotation.rotate(r.to_vec3()) + self.translation).to_array())
+    pub fn transform_point(&self, r: impl Into<Point3<T>>) -> Point3<T> {
+        Point3::from_vec3(self.rotation.rotate(r.into().to_vec3()) + self.translation)
     }
 
     /// The same placement as a [`Pose`] (matrix and translation).

@@ -3,7 +3,16 @@
 use crate::{Float, Vec3};
 
 /// A placement `p |-> R p + x` of a body frame in the world frame: the pose
-/// of a rigid body at one time, `x(t) + R(t) r`.
+/// of a rigid body at one time, `x(t) + R(t) r`, evaluated as a matrix.
+///
+/// The crate has two placements, for two jobs. An
+/// [`Isometry`](crate::Isometry) is what a caller *gives*: a checked unit
+/// quaternion and translation, mapping typed [`Point3`](crate::Point3)s. A
+/// `Pose` is what the crate *evaluates* and hands to steppers and distance
+/// oracles ([`RigidMotion::pose_at`](crate::RigidMotion::pose_at),
+/// [`Isometry::to_pose`](crate::Isometry::to_pose)): a plain matrix, no
+/// checks, mapping [`Vec3`]s and stored vertices (`[T; 3]`) in the hot
+/// loops.
 ///
 /// `rotation` is stored row-major (`rotation[k]` is the `k`-th row of `R`).
 /// Nothing checks that `R` is orthonormal: every map below is the plain
@@ -70,11 +79,19 @@ impl<T: Float> Pose<T> {
         }
     }
 
-    /// `R p + x`: a body point in the world frame.
+    /// `R p + x`: a body point in the world frame. The point is any
+    /// `Into<Vec3>`: a [`Vec3`], or a vertex as stored, `[T; 3]`.
+    ///
+    /// ```
+    /// use motion_bound::{Pose, Vec3};
+    /// let pose = Pose::from_translation(Vec3::new(0.0, 1.0, 0.0));
+    /// let vertices = [[1.0, 0.0, 0.0], [0.0, 0.0, 2.0]];
+    /// assert_eq!(pose.transform_point(vertices[1]), Vec3::new(0.0, 1.0, 2.0));
+    /// ```
     #[inline]
     #[must_use]
-    pub fn transform_point(&self, p: Vec3<T>) -> Vec3<T> {
-        self.transform_vector(p) + self.translation
+    pub fn transform_point(&self, p: impl Into<Vec3<T>>) -> Vec3<T> {
+        self.transform_vector(p.into()) + self.translation
     }
 
     /// `R v`: a free vector (a direction, a velocity) in the world frame.

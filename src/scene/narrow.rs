@@ -1,8 +1,6 @@
 //! The narrow phase: each pair the broad phase kept, by the stepper of its
 //! shapes ([`AnyPair`]), on this thread or on every core.
 
-use alloc::vec::Vec;
-
 use super::params::{SceneParams, SceneQueryError};
 use super::query::Scene;
 use super::report::{PairReport, SceneReport, SceneWorkspace};
@@ -135,7 +133,7 @@ impl<T: Float + Send + Sync> Scene<'_, T> {
         params: &SceneParams<T>,
     ) -> Result<&'w SceneReport<T>, SceneQueryError> {
         use rayon::prelude::*;
-        let results: Vec<Result<(PairReport<T>, PairWork), SceneQueryError>> = ws
+        let results: alloc::vec::Vec<Result<(PairReport<T>, PairWork), SceneQueryError>> = ws
             .candidates
             .par_iter()
             .map_init(MeshWorkspace::new, |mesh, &(a, b)| {

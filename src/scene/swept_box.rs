@@ -64,7 +64,7 @@ impl<T: Float> SweptBox<T> {
         let (err, _) = placement_error(motion, t0, ball.outer_radius_up());
         let c = motion
             .pose_at(t0)
-            .transform_point(Vec3::from_array(*ball.centre()))
+            .transform_point(*ball.centre())
             .to_array();
         let rho = ball.radius();
         let mut lo: [T; 3] = core::array::from_fn(|k| sub_down(sub_down(c[k], rho), err));

@@ -127,12 +127,11 @@ impl<'p, T: Float> Placed<'p, T> {
 
     fn centre(&self, tree: &Hierarchy<T>, node: u32) -> Vec3<T> {
         self.pose
-            .transform_point(Vec3::from_array(*tree.nodes[node as usize].ball.centre()))
+            .transform_point(*tree.nodes[node as usize].ball.centre())
     }
 
     pub(super) fn corners(&self, leaf: &Leaf<T>) -> [Vec3<T>; 3] {
-        leaf.corners
-            .map(|c| self.pose.transform_point(Vec3::from_array(c)))
+        leaf.corners.map(|c| self.pose.transform_point(c))
     }
 
     /// The placement error of a leaf's points: the body's, plus a piece's
