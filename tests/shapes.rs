@@ -22,7 +22,9 @@ use motion_bound::ca::{
     MeshConvexPair, Shape,
 };
 use motion_bound::testkit::toi::Rng;
-use motion_bound::{BallTree, Convex, HalfSpace, RigidMotion, TriMesh, Vec3, VertexSet};
+use motion_bound::{
+    BallTree, BoundingBall, Convex, HalfSpace, RigidMotion, TriMesh, Vec3, VertexSet,
+};
 use shape_truth::Solid;
 
 /// Ground-truth samples over `[0, 1]`.
@@ -446,6 +448,16 @@ fn any_pair_answers_every_pair_of_kinds_in_either_order() {
         .collect();
     shapes.push(("ring", Shape::Mesh(&tree)));
     shapes.push(("ground", Shape::HalfSpace(ground)));
+    // The dispatch's own fast paths: two vertex sets (GJK on the points) and
+    // two balls (closed form), and each met by every other kind.
+    shapes.push((
+        "vertex set",
+        Shape::VertexSet(VertexSet::try_new(vertices).expect("points")),
+    ));
+    shapes.push((
+        "offset ball",
+        Shape::Ball(BoundingBall::try_new([0.1, -0.05, 0.08], 0.3).expect("ball")),
+    ));
     let mut checked = 0;
     for (na, a) in &shapes {
         for (nb, b) in &shapes {
@@ -525,6 +537,83 @@ struct Multi {
     name: &'static str,
     shape: Shape<'static, f64>,
     parts: Vec<(Vec<[[f64; 3]; 3]>, f64)>,
+}
+
+/// The dispatch's arms for vertex sets and balls, against closed forms: a
+/// cube (its eight corners as a vertex set) and a ball off its body origin
+/// fall without turning onto the ground, a convex ball, each other and
+/// themselves; the first touch is where their lowest points (or centres'
+/// distance) say. Never late, and within the closing time of the contact
+/// distance.
+#[test]
+fn vertex_sets_and_balls_meet_every_kind_where_the_closed_form_says() {
+    let mut cube = [[0.0f64; 3]; 8];
+    for (i, c) in cube.iter_mut().enumerate() {
+        *c = [0, 1, 2].map(|k| if i >> k & 1 == 1 { 0.5 } else { -0.5 });
+    }
+    let set = Shape::VertexSet(VertexSet::try_new(&cube).expect("cube"));
+    // A ball of radius 0.25 whose centre is 0.1 below the body origin.
+    let ball = Shape::Ball(BoundingBall::try_new([0.0, -0.1, 0.0], 0.25).expect("ball"));
+    let ground = Shape::HalfSpace(HalfSpace::try_new(Vec3::new(0.0, 1.0, 0.0)).expect("n"));
+    let sphere = Shape::Convex(Convex::try_ball(0.5).expect("sphere"));
+    // How far below its body origin each falling shape reaches, and how far
+    // above its origin each still one does (both along y).
+    let below = |s: &Shape<'_, f64>| match s {
+        Shape::VertexSet(_) => 0.5,
+        Shape::Ball(_) => 0.35,
+        _ => unreachable!("only the cube and the ball fall"),
+    };
+    let above = |s: &Shape<'_, f64>| match s {
+        Shape::VertexSet(_) => 0.5,
+        Shape::Ball(_) => 0.15,
+        Shape::Convex(_) => 0.5,
+        Shape::HalfSpace(_) => 0.0,
+        _ => unreachable!("no other kind is still"),
+    };
+    let params = CaParams::default().with_contact_distance(1e-3);
+    let speed = 4.0;
+    let mut checked = 0;
+    for falling in [set, ball] {
+        for still in [ground, sphere, set, ball] {
+            for order in [false, true] {
+                let y0 = 3.0;
+                let drop =
+                    RigidMotion::try_from_arrays([0.0, y0, 0.0], [0.0, -speed, 0.0], [0.0; 3])
+                        .expect("motion");
+                let rest =
+                    RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3]).expect("rest");
+                let report = if order {
+                    time_of_impact(
+                        &mut AnyPair::try_new(still, falling).expect("pair"),
+                        &rest,
+                        &drop,
+                        &params,
+                    )
+                } else {
+                    time_of_impact(
+                        &mut AnyPair::try_new(falling, still).expect("pair"),
+                        &drop,
+                        &rest,
+                        &params,
+                    )
+                }
+                .expect("query");
+                // Faces, a face and a ball, or two balls on one vertical line:
+                // the gap along y is the distance.
+                let truth = (y0 - below(&falling) - above(&still)) / speed;
+                let what = format!(
+                    "{:?} onto {:?} ({order}): {report:?}, truth {truth}",
+                    falling.kind(),
+                    still.kind()
+                );
+                let t = report.outcome.contact().expect(&what).time;
+                assert!(t <= truth, "LATE: {what}");
+                assert!(t >= truth - 1e-3 / speed, "too early: {what}");
+                checked += 1;
+            }
+        }
+    }
+    assert_eq!(checked, 16, "every pair in both orders");
 }
 
 /// The first sampled time at which some part of `a` comes within the sum
