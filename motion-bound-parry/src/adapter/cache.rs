@@ -4,7 +4,7 @@
 
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::{Arc, Mutex, PoisonError, Weak};
+use std::sync::{Arc, Mutex, MutexGuard, PoisonError, Weak};
 
 use motion_bound::ca::{CaParams, MeshWorkspace};
 
@@ -125,6 +125,12 @@ fn address(shape: &dyn Shape) -> usize {
     std::ptr::from_ref(shape).cast::<()>() as usize
 }
 
+/// `m` locked, poisoned or not (a panic while it was held leaves the cache
+/// usable).
+fn lock<T>(m: &Mutex<T>) -> MutexGuard<'_, T> {
+    m.lock().unwrap_or_else(PoisonError::into_inner)
+}
+
 impl ShapeCache {
     /// An empty cache.
     #[must_use]
@@ -142,7 +148,8 @@ impl ShapeCache {
     pub fn try_register(&self, shape: &SharedShape) -> Result<(), CastError> {
         let shape = Swept::see_through_shared(shape);
         let key = address(shape.as_ref());
-        let mut entries = self.entries.lock().unwrap_or_else(PoisonError::into_inner);
+        let shared = || Identity::Shared(Arc::downgrade(&shape.0));
+        let mut entries = lock(&self.entries);
         if let Some(e) = entries.get(&key) {
             if let Identity::Shared(w) = &e.identity {
                 if w.strong_count() > 0 {
@@ -154,7 +161,7 @@ impl ShapeCache {
                 entries.insert(
                     key,
                     Entry {
-                        identity: Identity::Shared(Arc::downgrade(&shape.0)),
+                        identity: shared(),
                         body,
                     },
                 );
@@ -165,16 +172,7 @@ impl ShapeCache {
         let body = Body::try_new(shape.as_ref())?;
         if body.has_tree() {
             self.built.fetch_add(1, Ordering::Relaxed);
-            self.entries
-                .lock()
-                .unwrap_or_else(PoisonError::into_inner)
-                .insert(
-                    key,
-                    Entry {
-                        identity: Identity::Shared(Arc::downgrade(&shape.0)),
-                        body: Arc::new(body),
-                    },
-                );
+            self.insert(key, shared(), Arc::new(body));
         }
         Ok(())
     }
@@ -200,7 +198,7 @@ impl ShapeCache {
         }
         let key = address(shape);
         {
-            let entries = self.entries.lock().unwrap_or_else(PoisonError::into_inner);
+            let entries = lock(&self.entries);
             if let Some(e) = entries.get(&key) {
                 if e.identity.matches(shape) {
                     self.hits.fetch_add(1, Ordering::Relaxed);
@@ -211,34 +209,25 @@ impl ShapeCache {
         let body = Arc::new(Body::try_new(shape)?);
         self.built.fetch_add(1, Ordering::Relaxed);
         if let Some(identity) = Identity::of(shape) {
-            self.entries
-                .lock()
-                .unwrap_or_else(PoisonError::into_inner)
-                .insert(
-                    key,
-                    Entry {
-                        identity,
-                        body: body.clone(),
-                    },
-                );
+            self.insert(key, identity, body.clone());
         }
         Ok(body)
     }
 
+    /// Keeps `body` for the shape at `key`, recognised by `identity`.
+    fn insert(&self, key: usize, identity: Identity, body: Arc<Body>) {
+        lock(&self.entries).insert(key, Entry { identity, body });
+    }
+
     /// Drops the bodies of registered shapes that no longer live.
     pub fn prune(&self) {
-        self.entries
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner)
+        lock(&self.entries)
             .retain(|_, e| !matches!(&e.identity, Identity::Shared(w) if w.strong_count() == 0));
     }
 
     /// Drops every cached body.
     pub fn clear(&self) {
-        self.entries
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner)
-            .clear();
+        lock(&self.entries).clear();
     }
 
     /// Bodies built, lookups answered, bodies held.
@@ -247,11 +236,7 @@ impl ShapeCache {
         CacheStats {
             built: self.built.load(Ordering::Relaxed),
             hits: self.hits.load(Ordering::Relaxed),
-            len: self
-                .entries
-                .lock()
-                .unwrap_or_else(PoisonError::into_inner)
-                .len(),
+            len: lock(&self.entries).len(),
         }
     }
 
@@ -276,12 +261,7 @@ impl ShapeCache {
     ) -> Result<Option<ShapeCastHit>, CastError> {
         let b1 = self.body(g1)?;
         let b2 = self.body(g2)?;
-        let ws = self
-            .workspaces
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner)
-            .pop()
-            .unwrap_or_default();
+        let ws = lock(&self.workspaces).pop().unwrap_or_default();
         let (hit, ws) = cast_bodies(
             motion1,
             &b1,
@@ -293,10 +273,7 @@ impl ShapeCache {
             params,
             ws,
         );
-        self.workspaces
-            .lock()
-            .unwrap_or_else(PoisonError::into_inner)
-            .push(ws);
+        lock(&self.workspaces).push(ws);
         hit
     }
 }

@@ -266,14 +266,14 @@ impl Body {
                 let mut pieces = Vec::with_capacity(c.shapes().len());
                 for (pose, part) in c.shapes() {
                     let part = Swept::see_through(part.as_ref());
-                    if matches!(
-                        part.as_typed_shape(),
-                        TypedShape::Compound(_) | TypedShape::HalfSpace(_)
-                    ) {
-                        return Err(CastError::Unsupported(match part.as_typed_shape() {
-                            TypedShape::Compound(_) => "a compound within a compound",
-                            _ => "a half-space within a compound",
-                        }));
+                    match part.as_typed_shape() {
+                        TypedShape::Compound(_) => {
+                            return Err(CastError::Unsupported("a compound within a compound"))
+                        }
+                        TypedShape::HalfSpace(_) => {
+                            return Err(CastError::Unsupported("a half-space within a compound"))
+                        }
+                        _ => {}
                     }
                     pieces.push(Piece::new(part, Some(pose))?);
                 }

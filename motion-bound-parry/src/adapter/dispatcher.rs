@@ -113,6 +113,12 @@ impl CertifiedDispatcher {
     }
 }
 
+/// Both shapes with any [`Swept`] layers removed: what each query handed to
+/// parry's dispatcher gives it.
+fn seen<'a, 'b>(g1: &'a dyn Shape, g2: &'b dyn Shape) -> (&'a dyn Shape, &'b dyn Shape) {
+    (Swept::see_through(g1), Swept::see_through(g2))
+}
+
 impl QueryDispatcher for CertifiedDispatcher {
     fn intersection_test(
         &self,
@@ -120,11 +126,8 @@ impl QueryDispatcher for CertifiedDispatcher {
         g1: &dyn Shape,
         g2: &dyn Shape,
     ) -> Result<ShapeIntersection, Unsupported> {
-        DefaultQueryDispatcher.intersection_test(
-            pos12,
-            Swept::see_through(g1),
-            Swept::see_through(g2),
-        )
+        let (g1, g2) = seen(g1, g2);
+        DefaultQueryDispatcher.intersection_test(pos12, g1, g2)
     }
 
     fn distance(
@@ -133,7 +136,8 @@ impl QueryDispatcher for CertifiedDispatcher {
         g1: &dyn Shape,
         g2: &dyn Shape,
     ) -> Result<ShapeDistance, Unsupported> {
-        DefaultQueryDispatcher.distance(pos12, Swept::see_through(g1), Swept::see_through(g2))
+        let (g1, g2) = seen(g1, g2);
+        DefaultQueryDispatcher.distance(pos12, g1, g2)
     }
 
     fn contact(
@@ -143,12 +147,8 @@ impl QueryDispatcher for CertifiedDispatcher {
         g2: &dyn Shape,
         prediction: Real,
     ) -> Result<Option<Contact>, Unsupported> {
-        DefaultQueryDispatcher.contact(
-            pos12,
-            Swept::see_through(g1),
-            Swept::see_through(g2),
-            prediction,
-        )
+        let (g1, g2) = seen(g1, g2);
+        DefaultQueryDispatcher.contact(pos12, g1, g2, prediction)
     }
 
     fn closest_points(
@@ -158,12 +158,8 @@ impl QueryDispatcher for CertifiedDispatcher {
         g2: &dyn Shape,
         max_dist: Real,
     ) -> Result<ClosestPoints, Unsupported> {
-        DefaultQueryDispatcher.closest_points(
-            pos12,
-            Swept::see_through(g1),
-            Swept::see_through(g2),
-            max_dist,
-        )
+        let (g1, g2) = seen(g1, g2);
+        DefaultQueryDispatcher.closest_points(pos12, g1, g2, max_dist)
     }
 
     fn cast_shapes(
@@ -174,13 +170,8 @@ impl QueryDispatcher for CertifiedDispatcher {
         g2: &dyn Shape,
         options: parry::query::ShapeCastOptions,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        DefaultQueryDispatcher.cast_shapes(
-            pos12,
-            local_vel12,
-            Swept::see_through(g1),
-            Swept::see_through(g2),
-            options,
-        )
+        let (g1, g2) = seen(g1, g2);
+        DefaultQueryDispatcher.cast_shapes(pos12, local_vel12, g1, g2, options)
     }
 
     fn cast_shapes_nonlinear(
@@ -211,11 +202,12 @@ impl QueryDispatcher for CertifiedDispatcher {
                 self.counters
                     .handed_to_parry
                     .fetch_add(1, Ordering::Relaxed);
+                let (g1, g2) = seen(g1, g2);
                 DefaultQueryDispatcher.cast_shapes_nonlinear(
                     motion1,
-                    Swept::see_through(g1),
+                    g1,
                     motion2,
-                    Swept::see_through(g2),
+                    g2,
                     start_time,
                     end_time,
                     stop_at_penetration,
@@ -240,11 +232,12 @@ where
         manifolds: &mut Vec<parry::query::ContactManifold<ManifoldData, ContactData>>,
         workspace: &mut Option<parry::query::ContactManifoldsWorkspace>,
     ) -> Result<(), Unsupported> {
+        let (g1, g2) = seen(g1, g2);
         parry::query::PersistentQueryDispatcher::contact_manifolds(
             &DefaultQueryDispatcher,
             pos12,
-            Swept::see_through(g1),
-            Swept::see_through(g2),
+            g1,
+            g2,
             prediction,
             manifolds,
             workspace,
@@ -261,11 +254,12 @@ where
         prediction: Real,
         manifold: &mut parry::query::ContactManifold<ManifoldData, ContactData>,
     ) -> Result<(), Unsupported> {
+        let (g1, g2) = seen(g1, g2);
         parry::query::PersistentQueryDispatcher::contact_manifold_convex_convex(
             &DefaultQueryDispatcher,
             pos12,
-            Swept::see_through(g1),
-            Swept::see_through(g2),
+            g1,
+            g2,
             normal_constraints1,
             normal_constraints2,
             prediction,
