@@ -1,0 +1,269 @@
+//! [`CertifiedDispatcher`]: a query dispatcher for parry and rapier whose
+//! nonlinear cast is the certified one, every other query parry's (through
+//! any [`Swept`]), with its counters ([`DispatchStats`]).
+
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::Arc;
+
+use motion_bound::ca::CaParams;
+
+use super::cache::ShapeCache;
+use super::error::CastError;
+use super::parry;
+use super::swept::Swept;
+use parry::math::{Pose, Real, Vector};
+use parry::query::{
+    ClosestPoints, Contact, DefaultQueryDispatcher, NonlinearRigidMotion, QueryDispatcher,
+    ShapeCastHit, ShapeDistance, ShapeIntersection, Unsupported,
+};
+use parry::shape::Shape;
+
+/// How many casts a [`CertifiedDispatcher`] answered, and how many it
+/// handed to parry.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct DispatchStats {
+    /// Casts answered by the certified conservative advancement.
+    pub certified: u64,
+    /// Casts handed to parry's `cast_shapes_nonlinear`: a shape this
+    /// adapter does not take, or an input it refuses (the `CastError` is
+    /// counted, parry answers as it would without this dispatcher).
+    pub handed_to_parry: u64,
+}
+
+/// A query dispatcher for parry and rapier whose `cast_shapes_nonlinear`
+/// is the certified one ([`ShapeCache::cast_shapes_nonlinear`]), every
+/// other query going to parry's [`DefaultQueryDispatcher`]. Give it to
+/// rapier's narrow phase:
+///
+/// ```
+/// use motion_bound_parry::CertifiedDispatcher;
+/// use rapier3d_f64::prelude::NarrowPhase;
+/// let narrow_phase = NarrowPhase::with_query_dispatcher(CertifiedDispatcher::new());
+/// # let _ = narrow_phase;
+/// ```
+///
+/// A pair it cannot take (a heightfield, a polyline, voxels, a custom
+/// shape) or an input it refuses goes to parry's own nonlinear cast, and is
+/// counted ([`stats`](Self::stats)).
+///
+/// Every query sees through a [`Swept`] shape (either shape, any query:
+/// contacts, distances, casts), so that a collider wrapped to have its CCD
+/// answered here makes the same contacts as unwrapped. Rapier calls
+/// `cast_shapes_nonlinear` only for the pairs its own sweeps do not take
+/// (cylinders, cones, half-spaces, custom shapes such as [`Swept`]): wrap
+/// the colliders whose CCD should be certified.
+///
+/// A clone shares the cache and the counters: keep one to read the stats
+/// of the one given to rapier.
+#[derive(Clone, Debug, Default)]
+pub struct CertifiedDispatcher {
+    cache: Arc<ShapeCache>,
+    params: CaParams<Real>,
+    counters: Arc<Counters>,
+}
+
+/// A dispatcher's counters, shared by its clones.
+#[derive(Debug, Default)]
+struct Counters {
+    certified: AtomicU64,
+    handed_to_parry: AtomicU64,
+}
+
+impl CertifiedDispatcher {
+    /// With [`CaParams::default`] and a new cache.
+    #[must_use]
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// With conservative advancement's parameters `params` (the contact
+    /// distance for your length unit, the iteration and work budgets).
+    ///
+    /// # Errors
+    /// [`CastError::Ca`] for invalid parameters.
+    pub fn try_with_params(mut self, params: CaParams<Real>) -> Result<Self, CastError> {
+        params.validate()?;
+        self.params = params;
+        Ok(self)
+    }
+
+    /// With the cache `cache` (shared with other dispatchers or with the
+    /// program, which may [register](ShapeCache::register) its shapes).
+    #[must_use]
+    pub fn with_cache(mut self, cache: Arc<ShapeCache>) -> Self {
+        self.cache = cache;
+        self
+    }
+
+    /// The cache.
+    #[must_use]
+    pub fn cache(&self) -> &Arc<ShapeCache> {
+        &self.cache
+    }
+
+    /// Casts answered and handed over so far, by this dispatcher and its
+    /// clones.
+    #[must_use]
+    pub fn stats(&self) -> DispatchStats {
+        DispatchStats {
+            certified: self.counters.certified.load(Ordering::Relaxed),
+            handed_to_parry: self.counters.handed_to_parry.load(Ordering::Relaxed),
+        }
+    }
+}
+
+/// Both shapes with any [`Swept`] layers removed: what each query handed to
+/// parry's dispatcher gives it.
+fn seen<'a, 'b>(g1: &'a dyn Shape, g2: &'b dyn Shape) -> (&'a dyn Shape, &'b dyn Shape) {
+    (Swept::see_through(g1), Swept::see_through(g2))
+}
+
+impl QueryDispatcher for CertifiedDispatcher {
+    fn intersection_test(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+    ) -> Result<ShapeIntersection, Unsupported> {
+        let (g1, g2) = seen(g1, g2);
+        DefaultQueryDispatcher.intersection_test(pos12, g1, g2)
+    }
+
+    fn distance(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+    ) -> Result<ShapeDistance, Unsupported> {
+        let (g1, g2) = seen(g1, g2);
+        DefaultQueryDispatcher.distance(pos12, g1, g2)
+    }
+
+    fn contact(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        prediction: Real,
+    ) -> Result<Option<Contact>, Unsupported> {
+        let (g1, g2) = seen(g1, g2);
+        DefaultQueryDispatcher.contact(pos12, g1, g2, prediction)
+    }
+
+    fn closest_points(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        max_dist: Real,
+    ) -> Result<ClosestPoints, Unsupported> {
+        let (g1, g2) = seen(g1, g2);
+        DefaultQueryDispatcher.closest_points(pos12, g1, g2, max_dist)
+    }
+
+    fn cast_shapes(
+        &self,
+        pos12: &Pose,
+        local_vel12: Vector,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        options: parry::query::ShapeCastOptions,
+    ) -> Result<Option<ShapeCastHit>, Unsupported> {
+        let (g1, g2) = seen(g1, g2);
+        DefaultQueryDispatcher.cast_shapes(pos12, local_vel12, g1, g2, options)
+    }
+
+    fn cast_shapes_nonlinear(
+        &self,
+        motion1: &NonlinearRigidMotion,
+        g1: &dyn Shape,
+        motion2: &NonlinearRigidMotion,
+        g2: &dyn Shape,
+        start_time: Real,
+        end_time: Real,
+        stop_at_penetration: bool,
+    ) -> Result<Option<ShapeCastHit>, Unsupported> {
+        match self.cache.cast_shapes_nonlinear(
+            motion1,
+            g1,
+            motion2,
+            g2,
+            start_time,
+            end_time,
+            stop_at_penetration,
+            &self.params,
+        ) {
+            Ok(hit) => {
+                self.counters.certified.fetch_add(1, Ordering::Relaxed);
+                Ok(hit)
+            }
+            Err(_) => {
+                self.counters
+                    .handed_to_parry
+                    .fetch_add(1, Ordering::Relaxed);
+                let (g1, g2) = seen(g1, g2);
+                DefaultQueryDispatcher.cast_shapes_nonlinear(
+                    motion1,
+                    g1,
+                    motion2,
+                    g2,
+                    start_time,
+                    end_time,
+                    stop_at_penetration,
+                )
+            }
+        }
+    }
+}
+
+impl<ManifoldData, ContactData> parry::query::PersistentQueryDispatcher<ManifoldData, ContactData>
+    for CertifiedDispatcher
+where
+    ManifoldData: Default + Clone + Send + Sync,
+    ContactData: Default + Copy + Send + Sync,
+{
+    fn contact_manifolds(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        prediction: Real,
+        manifolds: &mut Vec<parry::query::ContactManifold<ManifoldData, ContactData>>,
+        workspace: &mut Option<parry::query::ContactManifoldsWorkspace>,
+    ) -> Result<(), Unsupported> {
+        let (g1, g2) = seen(g1, g2);
+        parry::query::PersistentQueryDispatcher::contact_manifolds(
+            &DefaultQueryDispatcher,
+            pos12,
+            g1,
+            g2,
+            prediction,
+            manifolds,
+            workspace,
+        )
+    }
+
+    fn contact_manifold_convex_convex(
+        &self,
+        pos12: &Pose,
+        g1: &dyn Shape,
+        g2: &dyn Shape,
+        normal_constraints1: Option<&dyn parry::query::details::NormalConstraints>,
+        normal_constraints2: Option<&dyn parry::query::details::NormalConstraints>,
+        prediction: Real,
+        manifold: &mut parry::query::ContactManifold<ManifoldData, ContactData>,
+    ) -> Result<(), Unsupported> {
+        let (g1, g2) = seen(g1, g2);
+        parry::query::PersistentQueryDispatcher::contact_manifold_convex_convex(
+            &DefaultQueryDispatcher,
+            pos12,
+            g1,
+            g2,
+            normal_constraints1,
+            normal_constraints2,
+            prediction,
+            manifold,
+        )
+    }
+}
