@@ -120,31 +120,18 @@ pub struct Body {
     pub(crate) data: Data,
 }
 
-/// A body's shapes borrowed for one query (a compound's parts assembled).
+/// A body's shape borrowed for one query: a [`Shape`], or a compound whose
+/// parts were assembled for it (a shape borrows its compound).
 pub(crate) enum Prepared<'a> {
-    Convex(Convex<'a, f64>),
-    Mesh(&'a BallTree<f64>),
-    HalfSpace(HalfSpace<f64>),
+    Shape(Shape<'a, f64>),
     Compound(Compound<'a, f64>),
 }
 
 impl Prepared<'_> {
-    /// The shape for a pair query.
+    /// The shape, for a pair query or a scene.
     pub(crate) fn shape(&self) -> Shape<'_, f64> {
         match self {
-            Self::Convex(c) => Shape::Convex(*c),
-            Self::Mesh(t) => Shape::Mesh(t),
-            Self::HalfSpace(h) => Shape::HalfSpace(*h),
-            Self::Compound(c) => Shape::Compound(c),
-        }
-    }
-
-    /// The shape for a scene.
-    pub(crate) fn body_shape(&self) -> Shape<'_, f64> {
-        match self {
-            Self::Convex(c) => Shape::Convex(*c),
-            Self::Mesh(t) => Shape::Mesh(t),
-            Self::HalfSpace(h) => Shape::HalfSpace(*h),
+            Self::Shape(s) => *s,
             Self::Compound(c) => Shape::Compound(c),
         }
     }
@@ -154,10 +141,10 @@ impl Body {
     /// The shapes a query borrows.
     pub(crate) fn prepare(&self) -> PyResult<Prepared<'_>> {
         Ok(match &self.data {
-            Data::Convex { convex, .. } => Prepared::Convex(*convex),
-            Data::Hull(h) => Prepared::Convex(h.convex(None)?),
-            Data::Mesh(m) => Prepared::Mesh(&m.tree),
-            Data::HalfSpace { half, .. } => Prepared::HalfSpace(*half),
+            Data::Convex { convex, .. } => Prepared::Shape(Shape::Convex(*convex)),
+            Data::Hull(h) => Prepared::Shape(Shape::Convex(h.convex(None)?)),
+            Data::Mesh(m) => Prepared::Shape(Shape::Mesh(&m.tree)),
+            Data::HalfSpace { half, .. } => Prepared::Shape(Shape::HalfSpace(*half)),
             Data::Compound { parts, .. } => {
                 let parts = parts
                     .iter()
@@ -234,11 +221,15 @@ impl Body {
     /// (`inf` for a half-space).
     #[getter]
     fn reach(&self) -> PyResult<f64> {
-        Ok(match self.prepare()? {
-            Prepared::Convex(c) => c.reach(),
-            Prepared::Mesh(t) => t.root_ball().centre_norm_up() + t.root_ball().radius(),
-            Prepared::HalfSpace(_) => f64::INFINITY,
-            Prepared::Compound(c) => c.reach(),
+        let prepared = self.prepare()?;
+        Ok(match prepared.shape() {
+            Shape::Convex(c) => c.reach(),
+            Shape::HalfSpace(_) => f64::INFINITY,
+            Shape::Compound(c) => c.reach(),
+            other => {
+                let ball = other.bounding_ball().map_err(input)?;
+                ball.centre_norm_up() + ball.radius()
+            }
         })
     }
 

@@ -106,9 +106,7 @@ impl Scene {
             let interval = TimeInterval::try_new(0.0, duration).map_err(input)?;
             let mut scene = RustScene::try_new(interval).map_err(scene_err)?;
             for (prep, (_, motion)) in prepared.iter().zip(&bodies) {
-                scene
-                    .try_add(prep.body_shape(), *motion)
-                    .map_err(scene_err)?;
+                scene.try_add(prep.shape(), *motion).map_err(scene_err)?;
             }
             let mut ws = SceneWorkspace::new();
             let report = if parallel {
