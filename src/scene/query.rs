@@ -13,14 +13,14 @@ use crate::{Float, Isometry, RigidMotion, TimeInterval, Vec3};
 /// first contact while skipping what cannot touch.
 ///
 /// A query runs in two phases. The **broad phase** computes each body's
-/// certified swept box ([`SweptBox`]) once, and a sweep and prune keeps the
+/// certified swept box ([`SweptBox`](super::SweptBox)) once, and a sweep and prune keeps the
 /// pairs whose boxes come within the contact distance (pairs of two static
 /// bodies are never kept); the caller's filter and the bodies' [`Groups`]
 /// then drop pairs the engine excludes. The **narrow phase** runs
 /// conservative advancement on each kept pair with the stepper of its shapes
-/// ([`MeshPair`], [`VertexSetPair`] with GJK, [`BallPair`]), reusing one mesh
+/// ([`AnyPair`](crate::ca::AnyPair), the one dispatch), reusing one mesh
 /// workspace. Every skip is sound (`proofs/11-scene.md`) and counted in
-/// [`SceneStats`].
+/// [`SceneStats`](super::SceneStats).
 ///
 /// ```
 /// use motion_bound::scene::{Shape, Scene, SceneParams, SceneWorkspace};
