@@ -45,7 +45,9 @@ pub(super) struct PlacedNodes<'a, T> {
 
 impl<'a, T: Float> PlacedNodes<'a, T> {
     /// Node `ia` of `ta` placed by `a`'s pose and node `ib` of `tb` by `b`'s.
-    #[inline]
+    /// (Always inlined: it runs for every node pair visited, and a call
+    /// that returns the struct through memory costs more than its work.)
+    #[inline(always)]
     pub(super) fn new(
         ta: &'a Hierarchy<T>,
         tb: &'a Hierarchy<T>,
