@@ -14,7 +14,7 @@
 
 use alloc::vec::Vec;
 
-use super::Leaf;
+use super::node::Leaf;
 use crate::rounding::{add_up, piece_corner_error_up};
 use crate::{Float, InputError, VertexSet};
 

@@ -72,16 +72,23 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod advance;
 mod bound;
+mod broad;
+mod gap;
 mod model;
-mod query;
+mod obstacle;
+mod params;
+mod report;
+mod scene;
+mod segment;
 #[cfg(feature = "urdf")]
 mod urdf;
 
 pub use model::{Chain, ChainBuilder, ChainError, JointKind, JointSpec};
-pub use query::{
-    ChainContact, ChainPair, ChainParams, ChainScene, ChainStats, Obstacle, PathReport,
-    SegmentOutcome, SegmentReport,
-};
+pub use obstacle::Obstacle;
+pub use params::ChainParams;
+pub use report::{ChainContact, ChainPair, ChainStats, PathReport, SegmentOutcome, SegmentReport};
+pub use scene::ChainScene;
 #[cfg(feature = "urdf")]
 pub use urdf::UrdfOptions;

@@ -109,7 +109,7 @@
 use core::cmp::Ordering;
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
-use super::Real;
+use super::real::Real;
 use crate::Float;
 
 /// `a * b + c` with a single rounding.

@@ -1,0 +1,361 @@
+//! [`BallTree`]: a mesh's hierarchy of whole triangles and, when it has long
+//! triangles, its hierarchy of pieces; which of the two a query descends.
+
+use alloc::vec::Vec;
+
+use super::hierarchy::Hierarchy;
+use super::node::Leaf;
+use super::piece_cell::PieceCell;
+use super::pieces;
+use crate::{BoundingBall, Float, InputError};
+
+/// The default piece length: this fraction of the mesh's reach (the largest
+/// vertex distance from the rotation centre).
+const PIECE_FRACTION: f64 = 1.0 / 32.0;
+
+/// By default a mesh gets a hierarchy of pieces when its longest edge
+/// exceeds this fraction of its reach.
+const PIECE_TRIGGER: f64 = 0.5;
+
+/// The default budget of pieces: this many per triangle, and at least
+/// [`MIN_PIECE_BUDGET`].
+const PIECES_PER_TRIANGLE: usize = 4;
+const MIN_PIECE_BUDGET: usize = 16384;
+
+/// The budget of pieces for a length given by the caller.
+const PIECE_BUDGET: usize = 1 << 16;
+
+/// How a tree's hierarchy of pieces is made: it exists when some triangle's
+/// longest edge exceeds `trigger`; every triangle longer than the piece
+/// length is cut down to it, the length being `length` or the least
+/// multiple of it by a power of `sqrt 2` whose pieces fit in `budget`.
+struct PiecePlan {
+    length: f64,
+    trigger: f64,
+    budget: usize,
+}
+
+/// A query uses a mesh's hierarchy of pieces when its largest leaf ball is
+/// more than this many times the other mesh's median leaf ball.
+const PIECES_RATIO: f64 = 4.0;
+
+/// A triangle mesh with its bounding-volume hierarchy, built once per body.
+///
+/// Vertices are offsets from the body's rotation centre at the epoch (the
+/// crate's convention for body points). Each node has two volumes, each
+/// certified to contain every point of its triangles in exact arithmetic:
+/// an oriented box along the principal axes of its corners (what gaps are
+/// measured with; thin for a flat patch, `proofs/floating-point.md`,
+/// "Oriented box") and a ball centred at the box's centre (what the node's
+/// directed bound is computed from, in `O(1)`:
+/// [`DirectedProbe::ball_speed`](crate::DirectedProbe::ball_speed)).
+///
+/// Built top-down, one triangle per leaf (`2 N - 1` nodes for `N`
+/// triangles): each node is split at the median of whichever of three keys
+/// (centroids along the widest axis or along the box's longest axis,
+/// normals along their principal axis) gives the children the smallest total
+/// box surface. `O(N log^2 N)`: about 0.5 s for 34K triangles here.
+///
+/// A mesh with a triangle much longer than its size scale (an edge over
+/// half its reach, as a board's or a box's) also gets a second hierarchy in
+/// which its long triangles are cut into pieces
+/// ([`try_with_piece_length`](Self::try_with_piece_length)); a query takes
+/// it against a mesh of much smaller triangles. That hierarchy splits at the
+/// median of one key (centroids along the widest axis): about 46 ms for
+/// the 13,768 pieces of a 12-triangle board here, paid by the first query
+/// that takes it (with `std`; without, when the tree is built).
+#[derive(Clone, Debug)]
+pub struct BallTree<T> {
+    /// Every triangle whole.
+    pub(crate) whole: Hierarchy<T>,
+    /// Long triangles cut into pieces (`pieces()`), when the mesh has any.
+    pieces: PieceCell<T>,
+    triangles: usize,
+    /// The largest and the median leaf ball radius of `whole`.
+    leaf_max: f64,
+    leaf_median: f64,
+}
+
+impl<T: Float> BallTree<T> {
+    /// Builds the hierarchy of `triangles` (indices into `vertices`), with
+    /// a hierarchy of pieces when its longest edge exceeds half the mesh's
+    /// reach (its largest vertex distance from the rotation centre): every
+    /// triangle longer than `1/32` of the reach cut to that length, within
+    /// a budget of `max(16,384, 4 N)` pieces (the length coarsened until they
+    /// fit). See [`try_with_piece_length`](Self::try_with_piece_length).
+    ///
+    /// # Errors
+    /// [`InputError::NoTriangles`] when there is no triangle,
+    /// [`InputError::TriangleIndexOutOfRange`] for an index past the vertices
+    /// (meshes built by [`TriMesh`](crate::TriMesh) never have one), and the
+    /// core's range errors for vertices out of range.
+    pub fn try_new(vertices: &[[T; 3]], triangles: &[[u32; 3]]) -> Result<Self, InputError> {
+        let reach = triangles
+            .iter()
+            .flatten()
+            .filter_map(|&i| vertices.get(i as usize))
+            .map(|v| {
+                let v = v.map(T::to_f64);
+                (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt()
+            })
+            .fold(0.0f64, f64::max);
+        let plan = PiecePlan {
+            length: reach * PIECE_FRACTION,
+            trigger: reach * PIECE_TRIGGER,
+            budget: (PIECES_PER_TRIANGLE * triangles.len()).max(MIN_PIECE_BUDGET),
+        };
+        Self::try_build(vertices, triangles, &plan)
+    }
+
+    /// Builds the hierarchy with pieces of length `length`: when a triangle's
+    /// longest edge exceeds `length`, the tree gets a second hierarchy in
+    /// which every such triangle is cut into pieces whose edges are at most
+    /// `length` (by longest-edge bisection, at most 4,096 pieces a triangle;
+    /// if the mesh's pieces would exceed 65,536, the length grows by factors
+    /// `sqrt 2` until they fit). `f64::INFINITY` makes no pieces.
+    ///
+    /// A large triangle as one leaf has one volume and one ball, whose
+    /// directed bound is that of its farthest point, against every node of
+    /// the other body near any part of it: a mesh of a few large triangles
+    /// then costs far more than the same shape finely cut. A query takes the
+    /// hierarchy of pieces when this mesh's largest leaf ball is more than
+    /// four times the other mesh's median one (a board against a detailed
+    /// model), and the whole triangles otherwise (a box against a box).
+    /// Pieces are certified like whole triangles, widened by their corners'
+    /// rounding (`proofs/09-ca-toi.md`, Lemma 9.5). Witnesses and
+    /// [`closest_triangles`](crate::ca::MeshPair::closest_triangles) name
+    /// the mesh's triangles.
+    ///
+    /// ```
+    /// use motion_bound::{bodies, BallTree};
+    /// let board = bodies::board::<f64>(2.0, 2.0, 0.002)?;
+    /// let cut = BallTree::try_with_piece_length(board.vertices(), board.triangles(), 0.05)?;
+    /// let whole = BallTree::try_with_piece_length(board.vertices(), board.triangles(), f64::INFINITY)?;
+    /// assert_eq!((cut.triangle_count(), whole.triangle_count()), (12, 12));
+    /// assert!(cut.piece_leaf_count() > 100 && whole.piece_leaf_count() == 0);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`try_new`](Self::try_new), and [`InputError::PieceLength`] for a
+    /// length that is NaN, zero or negative.
+    pub fn try_with_piece_length(
+        vertices: &[[T; 3]],
+        triangles: &[[u32; 3]],
+        length: f64,
+    ) -> Result<Self, InputError> {
+        if length.is_nan() || length <= 0.0 {
+            return Err(InputError::PieceLength);
+        }
+        let plan = PiecePlan {
+            length,
+            trigger: length,
+            budget: PIECE_BUDGET,
+        };
+        Self::try_build(vertices, triangles, &plan)
+    }
+
+    fn try_build(
+        vertices: &[[T; 3]],
+        triangles: &[[u32; 3]],
+        plan: &PiecePlan,
+    ) -> Result<Self, InputError> {
+        if triangles.is_empty() {
+            return Err(InputError::NoTriangles);
+        }
+        let mut leaves = Vec::with_capacity(triangles.len());
+        for (k, tri) in triangles.iter().enumerate() {
+            let mut corners = [[T::ZERO; 3]; 3];
+            for (c, &i) in corners.iter_mut().zip(tri) {
+                *c = *vertices
+                    .get(i as usize)
+                    .ok_or(InputError::TriangleIndexOutOfRange {
+                        triangle: k,
+                        index: i,
+                    })?;
+            }
+            let set = crate::VertexSet::try_new(&corners)?;
+            leaves.push(Leaf {
+                corners,
+                r_hat: set.summary().max_radius(),
+                inflate: T::ZERO,
+                triangle: k as u32,
+            });
+        }
+        // The hierarchy of pieces exists when some triangle is long enough;
+        // it is built on first use (with `std`) or now.
+        let longest = leaves
+            .iter()
+            .map(|l| pieces::longest_edge(&l.corners.map(|c| c.map(T::to_f64))).0)
+            .fold(0.0f64, f64::max);
+        let piece_plan =
+            (longest > plan.trigger && plan.length > 0.0).then_some((plan.length, plan.budget));
+        let whole = Hierarchy::try_new(leaves, true)?;
+        let mut radii: Vec<f64> = whole
+            .nodes
+            .iter()
+            .filter(|n| n.leaf().is_some())
+            .map(|n| n.ball.radius().to_f64())
+            .collect();
+        radii.sort_by(f64::total_cmp);
+        Ok(Self {
+            leaf_max: radii.last().copied().unwrap_or(0.0),
+            leaf_median: radii.get(radii.len() / 2).copied().unwrap_or(0.0),
+            pieces: PieceCell::new(&whole.leaves, piece_plan),
+            whole,
+            triangles: triangles.len(),
+        })
+    }
+
+    /// The hierarchy of pieces, built on first use, or `None` when the mesh
+    /// has no triangle long enough.
+    fn pieces(&self) -> Option<&Hierarchy<T>> {
+        self.pieces.get(&self.whole.leaves)
+    }
+
+    /// The hierarchy a query of this mesh against `other` descends: the one
+    /// of pieces when this mesh has one and its largest leaf is more than
+    /// four times the other's median leaf, else the one of whole triangles.
+    pub(crate) fn against(&self, other: &Self) -> &Hierarchy<T> {
+        if self.pieces.plan.is_some() && self.leaf_max > PIECES_RATIO * other.leaf_median {
+            if let Some(p) = self.pieces() {
+                return p;
+            }
+        }
+        &self.whole
+    }
+}
+
+impl<T: Float> BallTree<T> {
+    /// The hierarchy of a validated mesh (vertices relative to its rotation centre).
+    ///
+    /// # Errors
+    /// Only the core's range errors, for a mesh so large that a node radius
+    /// exceeds [`Float::MAX_INPUT`].
+    ///
+    /// ```
+    /// use motion_bound::{bodies, BallTree};
+    /// let mesh = bodies::torus::<f64>(1.0, 0.25, 24, 12).unwrap();
+    /// let tree = BallTree::try_from_mesh(&mesh).unwrap();
+    /// assert_eq!(tree.triangle_count(), mesh.triangle_count());
+    /// ```
+    pub fn try_from_mesh(mesh: &crate::TriMesh<T>) -> Result<Self, InputError> {
+        Self::try_new(mesh.vertices(), mesh.triangles())
+    }
+
+    /// The root's ball: contains the whole mesh.
+    #[must_use]
+    pub fn root_ball(&self) -> &BoundingBall<T> {
+        &self.whole.nodes[0].ball
+    }
+
+    /// The number of nodes of the hierarchy of whole triangles (`2 N - 1`
+    /// for `N` triangles).
+    #[must_use]
+    pub fn node_count(&self) -> usize {
+        self.whole.nodes.len()
+    }
+
+    /// The number of the mesh's triangles.
+    #[must_use]
+    pub fn triangle_count(&self) -> usize {
+        self.triangles
+    }
+
+    /// The number of leaves of the hierarchy of pieces (the pieces, and
+    /// the triangles short enough to stay whole; built now if not yet), or
+    /// `0` when the mesh has no triangle long enough to be cut
+    /// ([`try_with_piece_length`](Self::try_with_piece_length)).
+    #[must_use]
+    pub fn piece_leaf_count(&self) -> usize {
+        self.pieces().map_or(0, |p| p.leaves.len())
+    }
+
+    /// The length of the longest root-to-leaf path of the hierarchy of
+    /// whole triangles, in nodes.
+    #[must_use]
+    pub fn depth(&self) -> usize {
+        self.whole.depth
+    }
+
+    /// The rounded-up largest distance of a vertex from the rotation centre.
+    #[must_use]
+    pub fn max_radius(&self) -> T {
+        self.whole
+            .leaves
+            .iter()
+            .fold(T::ZERO, |m, l| m.max_nan(l.r_hat))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::BallTree;
+
+    #[test]
+    fn every_ball_contains_its_triangles_and_the_tree_is_complete() {
+        // A strip of 64 triangles along a helix.
+        let mut v = alloc::vec::Vec::new();
+        let mut t = alloc::vec::Vec::new();
+        for i in 0..66u32 {
+            let a = f64::from(i) * 0.3;
+            v.push([a.cos() * 2.0, a.sin() * 2.0, a * 0.1 + f64::from(i % 2)]);
+        }
+        for i in 0..64u32 {
+            t.push([i, i + 1, i + 2]);
+        }
+        let tree = BallTree::try_new(&v, &t).unwrap();
+        assert_eq!(tree.node_count(), 127, "2N - 1 nodes");
+        assert_eq!(tree.triangle_count(), 64, "one leaf per triangle");
+        assert!(
+            tree.depth() <= 8,
+            "median split is balanced: depth {}",
+            tree.depth()
+        );
+        // Every node's ball holds the corners of every leaf below it.
+        fn check(tree: &super::Hierarchy<f64>, node: usize) -> alloc::vec::Vec<usize> {
+            let n = &tree.nodes[node];
+            let below = match n.leaf() {
+                Some(l) => alloc::vec![l],
+                None => {
+                    let mut b = check(tree, n.left as usize);
+                    b.extend(check(tree, n.right as usize));
+                    b
+                }
+            };
+            let c = n.ball.centre();
+            for &l in &below {
+                for p in &tree.leaves[l].corners {
+                    let d = ((p[0] - c[0]).powi(2) + (p[1] - c[1]).powi(2) + (p[2] - c[2]).powi(2))
+                        .sqrt();
+                    assert!(
+                        d <= n.ball.radius(),
+                        "node {node}: corner at {d} > {}",
+                        n.ball.radius()
+                    );
+                }
+            }
+            below
+        }
+        let all = check(&tree.whole, 0);
+        assert_eq!(all.len(), 64, "every leaf reached once");
+    }
+
+    #[test]
+    fn bad_meshes_are_typed_errors() {
+        let v = [[0.0f32; 3]; 3];
+        assert_eq!(
+            BallTree::try_new(&v, &[]).err(),
+            Some(crate::InputError::NoTriangles),
+            "no triangle"
+        );
+        assert_eq!(
+            BallTree::try_new(&v, &[[0, 1, 2], [0, 1, 3]]).err(),
+            Some(crate::InputError::TriangleIndexOutOfRange {
+                triangle: 1,
+                index: 3
+            }),
+            "index out of range"
+        );
+    }
+}

@@ -1,0 +1,254 @@
+//! Certified gaps between two placed hierarchies: a node pair's balls, a
+//! triangle pair's slab, the descent of a node pair, and the branch and
+//! bound for the smallest gap over triangle pairs.
+
+use alloc::vec::Vec;
+
+use crate::bvh::{Hierarchy, Node};
+use crate::chain::bound::LinkMotion;
+use crate::chain::report::ChainStats;
+use crate::geometry::closest::triangle_triangle_vec;
+use crate::rounding::{gap_down, step_down};
+use crate::{Float, Pose, Vec3};
+
+/// The centre line of two balls as a computed unit vector, or `None`.
+#[inline]
+fn unit<T: Float>(v: Vec3<T>) -> Option<Vec3<T>> {
+    v.try_normalize()
+}
+
+/// The certified gap between two placed balls along their centre line
+/// (`gap_down` of the centre distance less the radii).
+#[inline]
+fn ball_gap<T: Float>(
+    ca: Vec3<T>,
+    ra: T,
+    cb: Vec3<T>,
+    rb: T,
+    a: &LinkMotion<T>,
+    b: &LinkMotion<T>,
+) -> T {
+    let d = (cb - ca).length();
+    gap_down(d - ra - rb, a.delta, b.delta, a.reach + b.reach)
+}
+
+/// A node pair of two hierarchies placed in the world: the nodes, their
+/// balls' placed centres and their radii.
+pub(super) struct PlacedNodes<'a, T> {
+    pub(super) na: &'a Node<T>,
+    pub(super) nb: &'a Node<T>,
+    pub(super) ca: Vec3<T>,
+    pub(super) cb: Vec3<T>,
+    pub(super) ra: T,
+    pub(super) rb: T,
+}
+
+impl<'a, T: Float> PlacedNodes<'a, T> {
+    /// Node `ia` of `ta` placed by `a`'s pose and node `ib` of `tb` by `b`'s.
+    /// (Always inlined: it runs for every node pair visited, and a call
+    /// that returns the struct through memory costs more than its work.)
+    #[inline(always)]
+    pub(super) fn new(
+        ta: &'a Hierarchy<T>,
+        tb: &'a Hierarchy<T>,
+        a: &LinkMotion<T>,
+        b: &LinkMotion<T>,
+        ia: u32,
+        ib: u32,
+    ) -> Self {
+        let (na, nb) = (&ta.nodes[ia as usize], &tb.nodes[ib as usize]);
+        let ca = a.pose.transform_point(*na.ball.centre());
+        let cb = b.pose.transform_point(*nb.ball.centre());
+        let (ra, rb) = (na.ball.radius(), nb.ball.radius());
+        Self {
+            na,
+            nb,
+            ca,
+            cb,
+            ra,
+            rb,
+        }
+    }
+
+    /// The certified gap between the two balls ([`ball_gap`]).
+    #[inline]
+    pub(super) fn ball_gap(&self, a: &LinkMotion<T>, b: &LinkMotion<T>) -> T {
+        ball_gap(self.ca, self.ra, self.cb, self.rb, a, b)
+    }
+
+    /// The certified step that closes the gap `g` along the balls' centre
+    /// line (`x` for coincident centres) at the balls' directed speeds.
+    #[inline]
+    pub(super) fn step(&self, g: T, a: &LinkMotion<T>, b: &LinkMotion<T>, x: Vec3<T>) -> T {
+        let n = unit(self.cb - self.ca).unwrap_or(x);
+        let (mu_a, _) = a.ball_speed(self.ca, self.ra, n);
+        let (mu_b, _) = b.ball_speed(self.cb, self.rb, n);
+        step_down(g, T::ZERO, mu_a, mu_b)
+    }
+
+    /// Descends the pair `(ia, ib)` when it is not two leaves: pushes the
+    /// children of the node that is not a leaf, or of two inner nodes those
+    /// of the one with the larger ball ([`push_children`]).
+    #[inline]
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn descend(
+        &self,
+        stack: &mut Vec<(u32, u32)>,
+        ta: &Hierarchy<T>,
+        tb: &Hierarchy<T>,
+        a: &LinkMotion<T>,
+        b: &LinkMotion<T>,
+        ia: u32,
+        ib: u32,
+    ) {
+        if self.na.leaf().is_none() && (self.nb.leaf().is_some() || self.ra >= self.rb) {
+            push_children(stack, self.na, &ta.nodes, &a.pose, self.cb, ia, ib, true);
+        } else {
+            push_children(stack, self.nb, &tb.nodes, &b.pose, self.ca, ia, ib, false);
+        }
+    }
+}
+
+/// The corners of leaf `leaf` of `tree` placed by `m`'s pose.
+#[inline]
+pub(super) fn placed_corners<T: Float>(
+    tree: &Hierarchy<T>,
+    leaf: usize,
+    m: &LinkMotion<T>,
+) -> [Vec3<T>; 3] {
+    tree.leaves[leaf].corners.map(|p| m.pose.transform_point(p))
+}
+
+/// Pushes the children of the node of the larger ball (of A when
+/// `on_a`), the one whose ball centre is nearer the other node's centre last
+/// (taken first: a small step is found early and prunes the rest).
+#[inline]
+#[allow(clippy::too_many_arguments)]
+fn push_children<T: Float>(
+    stack: &mut Vec<(u32, u32)>,
+    node: &Node<T>,
+    children: &[Node<T>],
+    pose: &Pose<T>,
+    other: Vec3<T>,
+    ia: u32,
+    ib: u32,
+    on_a: bool,
+) {
+    let d = |i: u32| {
+        let c = pose.transform_point(*children[i as usize].ball.centre());
+        (c - other).length() - children[i as usize].ball.radius()
+    };
+    let (near, far) = if d(node.left) <= d(node.right) {
+        (node.left, node.right)
+    } else {
+        (node.right, node.left)
+    };
+    if on_a {
+        stack.push((far, ib));
+        stack.push((near, ib));
+    } else {
+        stack.push((ia, far));
+        stack.push((ia, near));
+    }
+}
+
+/// The certified gap of two placed triangles along the computed direction
+/// `d` (from A towards B): `min_B q.n - max_A p.n`, less the rounding and
+/// the pieces' `inflate`
+/// (`gap_down`); `-inf` for a zero direction.
+pub(super) fn slab_gap<T: Float>(
+    pa: &[Vec3<T>; 3],
+    pb: &[Vec3<T>; 3],
+    d: Vec3<T>,
+    a: &LinkMotion<T>,
+    b: &LinkMotion<T>,
+    inflate: T,
+) -> T {
+    let Some(n) = d.try_normalize() else {
+        return -T::INFINITY;
+    };
+    let hi_a = pa.iter().map(|p| p.dot(n)).fold(-T::INFINITY, T::max_nan);
+    let lo_b = pb.iter().map(|p| p.dot(n)).fold(T::INFINITY, T::min_nan);
+    // A piece's exact points lie within `inflate` of its corners' triangle:
+    // taken with the placement error, as `gap_down` rounds it.
+    gap_down(lo_b - hi_a, a.delta + inflate, b.delta, a.reach + b.reach)
+}
+
+/// What the distance phase found: a certified lower bound of the distance
+/// (or of `cap`, when everything is farther), and the closest triangle pair
+/// measured (its computed distance and witnesses).
+pub(super) struct Near<T> {
+    pub(super) gap: T,
+    pub(super) closest: Option<(T, Vec3<T>, Vec3<T>)>,
+}
+
+/// The smallest certified gap over triangle pairs (branch and bound on the
+/// balls; node pairs at least `cap` apart are not refined).
+#[allow(clippy::too_many_arguments)]
+pub(super) fn min_gap<T: Float>(
+    ta: &Hierarchy<T>,
+    tb: &Hierarchy<T>,
+    a: &LinkMotion<T>,
+    b: &LinkMotion<T>,
+    cap: T,
+    slack: T,
+    cap_touch: T,
+    stack: &mut Vec<(u32, u32)>,
+    stats: &mut ChainStats,
+) -> Near<T> {
+    let mut best = cap;
+    // The least gap of the node pairs left unrefined within the slack.
+    let mut kept = T::INFINITY;
+    let keep = T::ONE - slack;
+    let mut closest: Option<(T, Vec3<T>, Vec3<T>)> = None;
+    stack.clear();
+    stack.push((0, 0));
+    while let Some((ia, ib)) = stack.pop() {
+        stats.node_pairs += 1;
+        let nodes = PlacedNodes::new(ta, tb, a, b, ia, ib);
+        let g = nodes.ball_gap(a, b);
+        if g >= best {
+            continue;
+        }
+        if slack > T::ZERO && g >= best * keep && g > T::ZERO {
+            kept = kept.min_nan(g);
+            continue;
+        }
+        match (nodes.na.leaf(), nodes.nb.leaf()) {
+            (Some(la), Some(lb)) => {
+                stats.leaf_pairs += 1;
+                let pa = placed_corners(ta, la, a);
+                let pb = placed_corners(tb, lb, b);
+                // A piece's exact points are within `inflate` of its corners' triangle.
+                let inflate =
+                    (ta.leaves[la].inflate + tb.leaves[lb].inflate) * (T::ONE + T::UNIT_ROUNDOFF);
+                // First the cheap slab gap along the balls' centre line: a
+                // pair it shows farther than the contact distance, and within
+                // the slack of the best, needs no exact distance.
+                let g0 = slab_gap(&pa, &pb, nodes.cb - nodes.ca, a, b, inflate);
+                if g0 >= best {
+                    continue;
+                }
+                if slack > T::ZERO && g0 > cap_touch && g0 >= best * keep {
+                    kept = kept.min_nan(g0);
+                    continue;
+                }
+                let cp = triangle_triangle_vec(&pa, &pb);
+                let distance = cp.distance - inflate;
+                if closest.is_none_or(|(d, _, _)| distance < d) {
+                    closest = Some((distance, cp.on_a, cp.on_b));
+                }
+                let g = slab_gap(&pa, &pb, cp.on_b - cp.on_a, a, b, inflate).min_nan(distance);
+                let g = if g.is_nan() { -T::INFINITY } else { g };
+                if g < best {
+                    best = g;
+                }
+            }
+            _ => nodes.descend(stack, ta, tb, a, b, ia, ib),
+        }
+    }
+    Near {
+        gap: best.min_nan(kept),
+        closest,
+    }
+}

@@ -1,0 +1,441 @@
+//! [`ChainScene`]: a chain in still surroundings, its checked pairs and its
+//! public queries (a segment, a path, the clearance and the collisions at a
+//! configuration).
+
+use alloc::collections::BTreeSet;
+use alloc::vec;
+use alloc::vec::Vec;
+use core::ops::ControlFlow;
+
+use crate::bvh::Hierarchy;
+use crate::chain::advance::{advance_pair, PairEnd};
+use crate::chain::bound::LinkMotion;
+use crate::chain::broad::broad_phase;
+use crate::chain::gap::min_gap;
+use crate::chain::model::{Chain, ChainError};
+use crate::chain::obstacle::Obstacle;
+use crate::chain::params::ChainParams;
+use crate::chain::report::{
+    ChainContact, ChainPair, ChainStats, PathReport, SegmentOutcome, SegmentReport,
+};
+use crate::chain::segment::{Segment, Work};
+use crate::rounding::gamma;
+use crate::Float;
+
+/// A chain in still surroundings: what a planner's motion validator asks
+/// about. Pairs of adjacent links (joined by one joint, or rigidly through
+/// fixed joints) are never checked, nor pairs given to
+/// [`allow_collision`](Self::allow_collision) (an SRDF's disabled pairs).
+///
+/// ```
+/// use motion_bound::chain::{ChainBuilder, ChainScene, JointKind, JointSpec, Obstacle, SegmentOutcome};
+/// use motion_bound::{Pose, TriMesh, Vec3};
+/// // A bar 1 long along x, and a small block.
+/// let bar = TriMesh::try_new(
+///     vec![[0.0, -0.02, -0.02], [1.0, 0.0, 0.0], [0.0, 0.02, -0.02], [0.0, 0.0, 0.02]],
+///     vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
+/// )?;
+/// let block = TriMesh::try_new(
+///     vec![[0.0, 0.0, 0.0], [0.05, 0.0, 0.0], [0.0, 0.05, 0.0], [0.0, 0.0, 0.05]],
+///     vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
+/// )?;
+/// let mut b = ChainBuilder::new();
+/// let base = b.add_link("base", None)?;
+/// let arm = b.add_link("arm", Some(bar))?;
+/// b.add_joint(JointSpec {
+///     name: "shoulder".into(),
+///     kind: JointKind::Revolute,
+///     parent: base,
+///     child: arm,
+///     origin: Pose::IDENTITY,
+///     axis: [0.0, 0.0, 1.0],
+///     limits: None,
+/// })?;
+/// let mut scene = ChainScene::new(b.build()?);
+/// // The block 0.8 from the axis at 1.2 rad: the bar turning from 0 to 3 rad
+/// // reaches it a little before 1.2 rad (t = 0.4).
+/// let at = Pose::from_translation(Vec3::new(0.8 * 1.2f64.cos(), 0.8 * 1.2f64.sin(), -0.02));
+/// scene.add_obstacle(Obstacle::try_new("block", block, at)?);
+/// let report = scene.check_segment(&[0.0], &[3.0])?;
+/// match report.outcome {
+///     SegmentOutcome::Contact(c) => assert!(c.time > 0.3 && c.time < 0.4, "{c:?}"),
+///     other => panic!("{other:?}"),
+/// }
+/// // Turning the other way, nothing is in the way.
+/// assert_eq!(scene.check_segment(&[0.0], &[-3.0])?.outcome, SegmentOutcome::Separated);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone, Debug)]
+pub struct ChainScene<T> {
+    chain: Chain<T>,
+    obstacles: Vec<Obstacle<T>>,
+    allowed: BTreeSet<(usize, usize)>,
+    params: ChainParams<T>,
+    /// For each link, the root of its rigid group (links joined by fixed
+    /// joints share one).
+    group: Vec<usize>,
+}
+
+impl<T: Float> ChainScene<T> {
+    /// A scene of `chain` alone, with the default parameters.
+    #[must_use]
+    pub fn new(chain: Chain<T>) -> Self {
+        let n = chain.links.len();
+        let mut group: Vec<usize> = (0..n).collect();
+        // Parents first: a link joined by a fixed joint takes its parent's group.
+        for &j in &chain.order {
+            let joint = &chain.joints[j];
+            if joint.dof.is_none() {
+                group[joint.spec.child] = group[joint.spec.parent];
+            }
+        }
+        Self {
+            chain,
+            obstacles: Vec::new(),
+            allowed: BTreeSet::new(),
+            params: ChainParams::default(),
+            group,
+        }
+    }
+
+    /// The chain.
+    #[must_use]
+    pub fn chain(&self) -> &Chain<T> {
+        &self.chain
+    }
+
+    /// The obstacles.
+    #[must_use]
+    pub fn obstacles(&self) -> &[Obstacle<T>] {
+        &self.obstacles
+    }
+
+    /// Adds an obstacle and returns its index.
+    pub fn add_obstacle(&mut self, obstacle: Obstacle<T>) -> usize {
+        self.obstacles.push(obstacle);
+        self.obstacles.len() - 1
+    }
+
+    /// Never checks links `a` and `b` against each other (an SRDF's
+    /// `disable_collisions`).
+    pub fn allow_collision(&mut self, a: usize, b: usize) {
+        self.allowed.insert((a.min(b), a.max(b)));
+    }
+
+    /// Sets the parameters.
+    ///
+    /// # Errors
+    /// [`ChainError::InvalidParameter`].
+    pub fn set_params(&mut self, params: ChainParams<T>) -> Result<(), ChainError> {
+        params.validate()?;
+        self.params = params;
+        Ok(())
+    }
+
+    /// The parameters.
+    #[must_use]
+    pub fn params(&self) -> ChainParams<T> {
+        self.params
+    }
+
+    /// Whether links `a` and `b` are adjacent: in one rigid group, or in
+    /// groups joined by one movable joint (`false` for an index out of range).
+    #[must_use]
+    pub fn adjacent(&self, a: usize, b: usize) -> bool {
+        let (Some(&ga), Some(&gb)) = (self.group.get(a), self.group.get(b)) else {
+            return false;
+        };
+        if ga == gb {
+            return true;
+        }
+        let joined = |child_group: usize, parent_group: usize| {
+            self.chain
+                .parent_link(child_group)
+                .is_some_and(|p| self.group[p] == parent_group)
+        };
+        joined(ga, gb) || joined(gb, ga)
+    }
+
+    /// Whether the pair of links is checked (both have geometry, not
+    /// adjacent, not allowed).
+    #[must_use]
+    pub fn checks_pair(&self, a: usize, b: usize) -> bool {
+        a != b
+            && self.chain.links.get(a).is_some_and(|l| l.tree.is_some())
+            && self.chain.links.get(b).is_some_and(|l| l.tree.is_some())
+            && !self.adjacent(a, b)
+            && !self.allowed.contains(&(a.min(b), a.max(b)))
+    }
+
+    /// The pairs a query considers (with geometry), and whether each is
+    /// checked.
+    fn pairs(&self) -> Vec<(ChainPair, bool)> {
+        let mut out = Vec::new();
+        let n = self.chain.links.len();
+        for l in 0..n {
+            if self.chain.links[l].tree.is_none() {
+                continue;
+            }
+            for o in 0..self.obstacles.len() {
+                out.push((
+                    ChainPair::Obstacle {
+                        link: l,
+                        obstacle: o,
+                    },
+                    true,
+                ));
+            }
+            for m in l + 1..n {
+                if self.chain.links[m].tree.is_some() {
+                    out.push((
+                        ChainPair::SelfCollision { a: l, b: m },
+                        self.checks_pair(l, m),
+                    ));
+                }
+            }
+        }
+        out
+    }
+
+    /// The first contact along the joint-space segment
+    /// `q(t) = q0 + t (q1 - q0)`, `t` in `[0, 1]`.
+    ///
+    /// # Errors
+    /// [`ChainError::WrongDof`] and [`ChainError::NonFiniteCoordinate`].
+    pub fn check_segment(&self, q0: &[T], q1: &[T]) -> Result<SegmentReport<T>, ChainError> {
+        self.chain.check_q(q0)?;
+        self.chain.check_q(q1)?;
+        let mut work = Work::default();
+        Ok(self.segment(q0, q1, &mut work))
+    }
+
+    /// The first contact along a path of waypoints, segment by segment; stops
+    /// at the first segment with a contact (or an undecided one).
+    ///
+    /// # Errors
+    /// [`ChainError::InvalidParameter`] for fewer than two waypoints, and as
+    /// [`check_segment`](Self::check_segment).
+    pub fn check_path<Q: AsRef<[T]>>(&self, waypoints: &[Q]) -> Result<PathReport<T>, ChainError> {
+        if waypoints.len() < 2 {
+            return Err(ChainError::InvalidParameter("a path needs two waypoints"));
+        }
+        for q in waypoints {
+            self.chain.check_q(q.as_ref())?;
+        }
+        let mut work = Work::default();
+        let mut stats = ChainStats::default();
+        for (i, w) in waypoints.windows(2).enumerate() {
+            let report = self.segment(w[0].as_ref(), w[1].as_ref(), &mut work);
+            stats += report.stats;
+            if report.outcome != SegmentOutcome::Separated || i + 2 == waypoints.len() {
+                return Ok(PathReport {
+                    segment: i,
+                    outcome: report.outcome,
+                    stats,
+                });
+            }
+        }
+        Err(ChainError::InvalidParameter("a path needs two waypoints"))
+    }
+
+    /// A certified lower bound of the smallest distance over the checked
+    /// pairs at configuration `q` (`<= 0` for touching or overlapping
+    /// surfaces, up to rounding), and the pair that attains it (`None` when
+    /// nothing is checked).
+    ///
+    /// # Errors
+    /// [`ChainError::WrongDof`] and [`ChainError::NonFiniteCoordinate`].
+    pub fn clearance(&self, q: &[T]) -> Result<(T, Option<ChainPair>), ChainError> {
+        let mut best = (T::INFINITY, None);
+        self.each_checked_pair_at(q, |p, stack| {
+            let mut stats = ChainStats::default();
+            let d = min_gap(
+                p.ta,
+                p.tb,
+                p.a,
+                p.b,
+                best.0,
+                T::ZERO,
+                T::ZERO,
+                stack,
+                &mut stats,
+            )
+            .gap;
+            if d < best.0 {
+                best = (d, Some(p.pair));
+            }
+            ControlFlow::Continue(())
+        })?;
+        Ok(best)
+    }
+
+    /// Whether some checked pair's surfaces meet at configuration `q` (a
+    /// triangle pair at computed distance 0): the static check a discrete
+    /// motion validator runs at each sample. Stops at the first such pair.
+    ///
+    /// # Errors
+    /// [`ChainError::WrongDof`] and [`ChainError::NonFiniteCoordinate`].
+    pub fn collides_at(&self, q: &[T]) -> Result<bool, ChainError> {
+        Ok(!self.touching_pairs(q, T::ZERO, true)?.is_empty())
+    }
+
+    /// Never checks again the pairs of links whose surfaces are within
+    /// `distance` at configuration `q` (an SRDF's pairs "in collision by
+    /// default", such as fingers closed on each other), and returns them.
+    ///
+    /// # Errors
+    /// [`ChainError::WrongDof`], [`ChainError::NonFiniteCoordinate`] and
+    /// [`ChainError::InvalidParameter`] for a negative or non-finite distance.
+    pub fn allow_collisions_at(
+        &mut self,
+        q: &[T],
+        distance: T,
+    ) -> Result<Vec<(usize, usize)>, ChainError> {
+        if !(distance >= T::ZERO && distance.is_finite()) {
+            return Err(ChainError::InvalidParameter(
+                "distance must be non-negative and finite",
+            ));
+        }
+        let pairs: Vec<(usize, usize)> = self
+            .touching_pairs(q, distance, false)?
+            .into_iter()
+            .filter_map(|p| match p {
+                ChainPair::SelfCollision { a, b } => Some((a, b)),
+                ChainPair::Obstacle { .. } => None,
+            })
+            .collect();
+        for &(a, b) in &pairs {
+            self.allow_collision(a, b);
+        }
+        Ok(pairs)
+    }
+
+    /// The checked pairs with a triangle pair within `distance` at `q`
+    /// (computed distances); the first one only when `first`.
+    fn touching_pairs(
+        &self,
+        q: &[T],
+        distance: T,
+        first: bool,
+    ) -> Result<Vec<ChainPair>, ChainError> {
+        let mut out = Vec::new();
+        let mut stats = ChainStats::default();
+        self.each_checked_pair_at(q, |p, stack| {
+            // Node pairs whose certified gap exceeds the distance are not refined.
+            let cap = distance + T::ETA_NORMAL + T::TWO * (p.a.delta + p.b.delta);
+            let near = min_gap(
+                p.ta,
+                p.tb,
+                p.a,
+                p.b,
+                cap,
+                T::ZERO,
+                distance,
+                stack,
+                &mut stats,
+            );
+            if near.closest.is_some_and(|(d, _, _)| d <= distance) {
+                out.push(p.pair);
+                if first {
+                    return ControlFlow::Break(());
+                }
+            }
+            ControlFlow::Continue(())
+        })?;
+        Ok(out)
+    }
+
+    /// Runs `f` on each checked pair with the chain still at configuration
+    /// `q` (both sides' motions with rate zero), with the descent's stack,
+    /// until it breaks.
+    fn each_checked_pair_at(
+        &self,
+        q: &[T],
+        mut f: impl FnMut(PlacedPair<'_, T>, &mut Vec<(u32, u32)>) -> ControlFlow<()>,
+    ) -> Result<(), ChainError> {
+        self.chain.check_q(q)?;
+        let segment = self.segment_view(q, q);
+        let mut work = Work::default();
+        work.errors.compute(&self.chain, q, q);
+        segment.place(&mut work, T::ZERO);
+        work.rate = vec![T::ZERO; self.chain.dofs];
+        for (pair, checked) in self.pairs() {
+            if !checked {
+                continue;
+            }
+            let Some((ta, tb)) = segment.trees(pair) else {
+                continue;
+            };
+            segment.fill_motions(&mut work, pair, T::ZERO);
+            let (Some(a), Some(b)) = (&work.a, &work.b) else {
+                continue;
+            };
+            let placed = PlacedPair { pair, ta, tb, a, b };
+            if f(placed, &mut work.stack).is_break() {
+                break;
+            }
+        }
+        Ok(())
+    }
+
+    /// The scene along the segment from `q0` to `q1`.
+    fn segment_view<'a>(&'a self, q0: &'a [T], q1: &'a [T]) -> Segment<'a, T> {
+        Segment {
+            chain: &self.chain,
+            obstacles: &self.obstacles,
+            params: &self.params,
+            q0,
+            q1,
+        }
+    }
+
+    fn segment(&self, q0: &[T], q1: &[T], work: &mut Work<T>) -> SegmentReport<T> {
+        let mut stats = ChainStats::default();
+        work.errors.compute(&self.chain, q0, q1);
+        work.rate.clear();
+        work.rate.extend(
+            q0.iter()
+                .zip(q1)
+                .map(|(a, b)| (*b - *a).abs() * (T::ONE + gamma::<T>(2))),
+        );
+        let pairs = self.pairs();
+        let segment = self.segment_view(q0, q1);
+        let mut live = broad_phase(&segment, &pairs, work, &mut stats);
+        // Pairs whose swept volumes meet earliest first: an early contact
+        // found first ends every later pair's advance there.
+        live.sort_by_key(|&(_, mask)| mask.trailing_zeros());
+        let mut best: Option<ChainContact<T>> = None;
+        let mut limit: Option<(T, ChainPair)> = None;
+        for (pair, mask) in live {
+            let until = best.map_or(T::ONE, |c| c.time);
+            match advance_pair(&segment, pair, mask, until, work, &mut stats) {
+                PairEnd::Contact(c) => best = Some(c),
+                PairEnd::Undecided(t) => {
+                    if limit.is_none_or(|(lt, _)| t < lt) {
+                        limit = Some((t, pair));
+                    }
+                }
+                PairEnd::Free => {}
+            }
+        }
+        let outcome = match (best, limit) {
+            (Some(c), Some((lt, p))) if lt < c.time => {
+                SegmentOutcome::IterationLimit { time: lt, pair: p }
+            }
+            (Some(c), _) => SegmentOutcome::Contact(c),
+            (None, Some((lt, p))) => SegmentOutcome::IterationLimit { time: lt, pair: p },
+            (None, None) => SegmentOutcome::Separated,
+        };
+        SegmentReport { outcome, stats }
+    }
+}
+
+/// A checked pair with the chain still at one configuration: its two
+/// hierarchies and its two sides' motions.
+struct PlacedPair<'a, T> {
+    pair: ChainPair,
+    ta: &'a Hierarchy<T>,
+    tb: &'a Hierarchy<T>,
+    a: &'a LinkMotion<T>,
+    b: &'a LinkMotion<T>,
+}
