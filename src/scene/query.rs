@@ -23,7 +23,8 @@ use crate::{Float, Isometry, RigidMotion, TimeInterval, Vec3};
 /// [`SceneStats`](super::SceneStats).
 ///
 /// ```
-/// use motion_bound::scene::{Shape, Scene, SceneParams, SceneWorkspace};
+/// use motion_bound::ca::Shape;
+/// use motion_bound::scene::{Scene, SceneParams, SceneWorkspace};
 /// use motion_bound::{BoundingBall, Isometry, RigidMotion, TimeInterval, Vec3};
 /// let ball = Shape::Ball(BoundingBall::try_new([0.0; 3], 0.5)?);
 /// let mut scene = Scene::try_new(TimeInterval::try_new(0.0, 1.0)?)?;
