@@ -25,31 +25,7 @@ use std::time::Instant;
 use arm_scene::{arm_scene, Arm};
 use chain_truth::Truth;
 use motion_bound::chain::{ChainScene, SegmentOutcome};
-
-/// A small, seeded generator (splitmix64), so that runs repeat.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
-fn cpu() -> String {
-    std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("model name"))
-                .and_then(|l| l.split(':').nth(1))
-                .map(|s| s.trim().to_string())
-        })
-        .unwrap_or_else(|| "unknown CPU".into())
-}
+use motion_bound_devkit::{cpu_name, Args, Rng};
 
 /// The discrete check: a static check at `i / n`, `i = 1..=n`, with `n`
 /// samples of at most `fraction * extent` apart; the first colliding
@@ -79,16 +55,11 @@ fn discrete(
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let args: Vec<String> = std::env::args().collect();
-    let arg = |name: &str| {
-        args.iter()
-            .position(|a| a == name)
-            .and_then(|i| args.get(i + 1))
-            .cloned()
-    };
-    let segments: usize = arg("--segments").map_or(Ok(1000), |s| s.parse())?;
-    let seed: u64 = arg("--seed").map_or(Ok(7), |s| s.parse())?;
-    let arm = arg("--arm").unwrap_or_else(|| "panda".into());
+    let mut args = Args::from_env("arm [--segments 1000] [--arm panda|kuka] [--seed 7]");
+    let segments: usize = args.value_or("--segments", 1000);
+    let seed: u64 = args.value_or("--seed", 7);
+    let arm: String = args.value_or("--arm", "panda".into());
+    args.finish();
     let which = match arm.as_str() {
         "panda" => Arm::Panda,
         "kuka" => Arm::Kuka,
@@ -115,15 +86,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         truth.pairs.len(),
         defaults.len(),
         scene.params().contact_distance,
-        cpu()
+        cpu_name()
     );
-    let mut rng = Rng(seed);
+    let mut rng = Rng::new(seed);
     let sample_free = |rng: &mut Rng| -> Result<Vec<f64>, Box<dyn std::error::Error>> {
         loop {
-            let q: Vec<f64> = limits
-                .iter()
-                .map(|[lo, hi]| lo + rng.next() * (hi - lo))
-                .collect();
+            let q: Vec<f64> = limits.iter().map(|&[lo, hi]| rng.range(lo, hi)).collect();
             if !scene.collides_at(&q)? {
                 return Ok(q);
             }

@@ -21,6 +21,7 @@ use std::time::Instant;
 use motion_bound::bodies::icosphere;
 use motion_bound::ca::{time_of_impact, CaOutcome, CaParams, CaReport, MeshPair};
 use motion_bound::{BallTree, Float, Point3, RigidMotion, TimeInterval, TriMesh, Vec3};
+use motion_bound_devkit::{cpu_name, Args};
 
 /// The bunny centred and scaled to reach 0.5, times `scale`.
 fn bunny(scale: f64) -> Result<TriMesh<f64>, String> {
@@ -102,15 +103,10 @@ fn bunnies<T: Float>(label: &str, x: f64, s: f64) {
 }
 
 fn main() {
-    let quick = std::env::args().any(|a| a == "--quick");
-    let cpu = std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|c| {
-            c.lines()
-                .find(|l| l.starts_with("model name"))
-                .map(|l| l.split(':').nth(1).unwrap_or("").trim().to_owned())
-        })
-        .unwrap_or_else(|| "unknown CPU".into());
+    let mut args = Args::from_env("far_from_origin [--quick]");
+    let quick = args.flag("--quick");
+    args.finish();
+    let cpu = cpu_name();
     println!("CPU: {cpu}; ms: the least of three runs of one query\n");
     println!("| pair | outcome | iterations | node pairs | triangle pairs | ms |");
     println!("|---|---|---|---|---|---|");

@@ -15,6 +15,7 @@ use std::time::Instant;
 
 use motion_bound::ca::{time_of_impact, AnyPair, CaOutcome, CaParams, MeshWorkspace, Shape};
 use motion_bound::{BallTree, Isometry, RigidMotion, Rotation, TriMesh, Vec3};
+use motion_bound_devkit::Args;
 use rayon::prelude::*;
 
 struct Reader {
@@ -48,9 +49,12 @@ impl Reader {
 }
 
 fn main() {
-    let mut args = std::env::args().skip(1);
-    let path = args.next().expect("usage: batch FILE [REPEATS]");
-    let repeats: usize = args.next().map_or(3, |s| s.parse().expect("a count"));
+    let mut args = Args::from_env("batch FILE [REPEATS]");
+    let path: String = args
+        .positional("FILE")
+        .unwrap_or_else(|| args.fail("FILE is missing"));
+    let repeats: usize = args.positional("REPEATS").unwrap_or(3);
+    args.finish();
     let mut r = Reader {
         bytes: std::fs::read(&path).expect("readable file"),
         at: 0,

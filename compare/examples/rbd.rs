@@ -7,20 +7,11 @@
 //! changes the 300 frames per scene.
 
 use motion_bound::ca::BoundChoice;
+use motion_bound_devkit::Args;
 
 fn main() {
-    let mut frames = 300;
-    let mut args = std::env::args().skip(1);
-    while let Some(a) = args.next() {
-        match a.as_str() {
-            "--frames" => {
-                frames = args
-                    .next()
-                    .and_then(|s| s.parse().ok())
-                    .expect("--frames N")
-            }
-            other => panic!("unknown argument {other}"),
-        }
-    }
+    let mut args = Args::from_env("rbd [--frames 300]");
+    let frames = args.value_or("--frames", 300);
+    args.finish();
     let _ = motion_bound_compare::rbd::run_both(frames, BoundChoice::Auto, false);
 }

@@ -22,6 +22,7 @@ use motion_bound::ca::{time_of_impact, AnyPair, CaParams, Shape};
 use motion_bound::testkit::toi::{shape_fly_by, Rng};
 use motion_bound::{BallTree, Convex, HalfSpace, Vec3};
 use motion_bound_compare::parry::parry_motion;
+use motion_bound_devkit::{cpu_name, Args};
 use parry3d_f64::math::Vector;
 use parry3d_f64::query::cast_shapes_nonlinear;
 use parry3d_f64::shape::{
@@ -42,11 +43,9 @@ struct Both {
 }
 
 fn main() {
-    let queries: usize = std::env::args()
-        .skip_while(|a| a != "--queries")
-        .nth(1)
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(100);
+    let mut args = Args::from_env("shapes [--queries 100]");
+    let queries: usize = args.value_or("--queries", 100);
+    args.finish();
     let bunny_mesh = motion_bound_compare::shipped_mesh("bunny-npm-3674.obj.gz");
     let tree: &'static BallTree<f64> = Box::leak(Box::new(
         BallTree::try_from_mesh(&bunny_mesh).expect("tree"),
@@ -114,14 +113,7 @@ fn main() {
         (cuboid(), ground()),
         (ball(), ground()),
     ];
-    let cpu = std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|c| {
-            c.lines()
-                .find(|l| l.starts_with("model name"))
-                .map(|l| l.split(':').nth(1).unwrap_or("").trim().to_owned())
-        })
-        .unwrap_or_else(|| "unknown CPU".into());
+    let cpu = cpu_name();
     println!("CPU: {cpu}; {queries} fly-bys per pair kind with spins up to 8 rad per unit time, contact distance 1e-3\n");
     println!("| pair | ours ms per query | ours missed / late | parry ms per query | parry missed / late | parry / ours |");
     println!("|---|---|---|---|---|---|");

@@ -79,15 +79,8 @@ fn bench(c: &mut Criterion) {
     for (_, s) in &all {
         cache.try_register(s).expect("every shape converts");
     }
-    let mut rng = Rng(2027);
-    let cpu = std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|c| {
-            c.lines()
-                .find(|l| l.starts_with("model name"))
-                .map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string())
-        })
-        .unwrap_or_else(|| "unknown CPU".into());
+    let mut rng = Rng::new(2027);
+    let cpu = motion_bound_devkit::cpu_name();
     println!("CPU: {cpu}; {QUERIES} fly-bys per pair kind over [0, 1]");
     for i in 0..all.len() {
         for j in i..all.len() {

@@ -97,6 +97,7 @@
 
 use std::time::Instant;
 
+use motion_bound_devkit::{Args, Rng};
 use motion_bound_parry::rapier::CertifiedPass;
 use motion_bound_parry::{CertifiedDispatcher, DispatchStats, Swept};
 use parry3d_f64::math::{Pose, Rotation, Vector};
@@ -113,41 +114,15 @@ pub(crate) const TOL: f64 = 0.01;
 /// Steps per launch.
 pub(crate) const STEPS: usize = 150;
 
-/// A small deterministic generator (splitmix64).
-struct Rng(u64);
+/// A random unit vector (from the cube, of length more than 0.1 before normalising).
+fn unit(r: &mut Rng) -> Vector {
+    Vector::from(motion_bound_devkit::direction(r, 0.1))
+}
 
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.next()
-    }
-
-    fn unit(&mut self) -> Vector {
-        loop {
-            let v = Vector::new(
-                self.range(-1., 1.),
-                self.range(-1., 1.),
-                self.range(-1., 1.),
-            );
-            let l = v.length();
-            if l > 0.1 && l <= 1.0 {
-                return v / l;
-            }
-        }
-    }
-
-    fn rot(&mut self) -> Rotation {
-        let axis = self.unit();
-        Rotation::from_axis_angle(axis, self.range(0.0, std::f64::consts::PI))
-    }
+/// A random rotation: a random axis, an angle in `[0, pi)`.
+fn rot(r: &mut Rng) -> Rotation {
+    let axis = unit(r);
+    Rotation::from_axis_angle(axis, r.range(0.0, std::f64::consts::PI))
 }
 
 /// The worlds.
@@ -274,7 +249,7 @@ fn plate_mesh(half: f64, n: u32) -> SharedShape {
 /// The bodies of `world`'s launch `seed`.
 fn build(world: World, seed: u64) -> Vec<Spec> {
     let w = World::ALL.iter().position(|x| *x == world).unwrap_or(0) as u64;
-    let mut r = Rng(seed.wrapping_mul(7919).wrapping_add(w * 1_000_003));
+    let mut r = Rng::new(seed.wrapping_mul(7919).wrapping_add(w * 1_000_003));
     let jitter = |r: &mut Rng, s: f64| Vector::new(0.0, r.range(-s, s), r.range(-s, s));
     match world {
         World::Board => {
@@ -285,12 +260,12 @@ fn build(world: World, seed: u64) -> Vec<Spec> {
             );
             let v = r.range(8.0, 30.0);
             let lin = Vector::new(v, 0.0, 0.0) + jitter(&mut r, 0.1 * v);
-            let ang = r.unit() * r.range(20.0, 80.0);
+            let ang = unit(&mut r) * r.range(20.0, 80.0);
             vec![
                 wall(0.02, 4.0),
                 dynamic(
                     SharedShape::cuboid(1.0, 0.02, 0.3),
-                    Pose::from_parts(pos, r.rot()),
+                    Pose::from_parts(pos, rot(&mut r)),
                     lin,
                     ang,
                 ),
@@ -304,8 +279,8 @@ fn build(world: World, seed: u64) -> Vec<Spec> {
             };
             let (v1, v2) = (r.range(15.0, 60.0), r.range(15.0, 60.0));
             let off = jitter(&mut r, 0.08);
-            let a = Pose::from_parts(Vector::new(-2.0, 0.0, 0.0), r.rot());
-            let b = Pose::from_parts(Vector::new(2.0, 0.0, 0.0) + off, r.rot());
+            let a = Pose::from_parts(Vector::new(-2.0, 0.0, 0.0), rot(&mut r));
+            let b = Pose::from_parts(Vector::new(2.0, 0.0, 0.0) + off, rot(&mut r));
             vec![
                 dynamic(shape.clone(), a, Vector::new(v1, 0.0, 0.0), Vector::ZERO),
                 dynamic(shape, b, Vector::new(-v2, 0.0, 0.0), Vector::ZERO),
@@ -317,7 +292,7 @@ fn build(world: World, seed: u64) -> Vec<Spec> {
             } else {
                 (
                     SharedShape::cuboid(0.05, 0.05, 0.05),
-                    r.unit() * r.range(10.0, 60.0),
+                    unit(&mut r) * r.range(10.0, 60.0),
                 )
             };
             let v = r.range(20.0, 150.0);
@@ -336,7 +311,7 @@ fn build(world: World, seed: u64) -> Vec<Spec> {
                         half: Vector::new(2.0, 0.0, 2.0),
                     }),
                 },
-                dynamic(shape, Pose::from_parts(pos, r.rot()), lin, ang),
+                dynamic(shape, Pose::from_parts(pos, rot(&mut r)), lin, ang),
             ]
         }
         World::Mesh => {
@@ -347,9 +322,9 @@ fn build(world: World, seed: u64) -> Vec<Spec> {
                 wall(0.05, 4.0),
                 dynamic(
                     sphere_mesh(0.3),
-                    Pose::from_parts(pos, r.rot()),
+                    Pose::from_parts(pos, rot(&mut r)),
                     lin,
-                    r.unit() * r.range(0.0, 20.0),
+                    unit(&mut r) * r.range(0.0, 20.0),
                 ),
             ]
         }
@@ -366,9 +341,9 @@ fn build(world: World, seed: u64) -> Vec<Spec> {
                 wall(0.02, 4.0),
                 dynamic(
                     shape,
-                    Pose::from_parts(pos, r.rot()),
+                    Pose::from_parts(pos, rot(&mut r)),
                     lin,
-                    r.unit() * r.range(20.0, 80.0),
+                    unit(&mut r) * r.range(20.0, 80.0),
                 ),
             ]
         }
@@ -631,27 +606,13 @@ pub(crate) fn run_world(
 }
 
 fn main() {
-    let mut launches: u64 = 20;
-    let mut steps = STEPS;
-    let mut verbose = false;
-    let mut only: Option<String> = None;
-    let mut args = std::env::args().skip(1);
-    while let Some(a) = args.next() {
-        match a.as_str() {
-            "--launches" => {
-                launches = args
-                    .next()
-                    .and_then(|s| s.parse().ok())
-                    .expect("--launches N")
-            }
-            "--steps" => steps = args.next().and_then(|s| s.parse().ok()).expect("--steps N"),
-            "--verbose" => verbose = true,
-            "--world" => only = Some(args.next().expect("--world NAME")),
-            other => panic!(
-                "unknown argument {other} (--launches N, --steps N, --world NAME, --verbose)"
-            ),
-        }
-    }
+    let mut args =
+        Args::from_env("rapier_worlds [--launches 20] [--steps 150] [--world NAME] [--verbose]");
+    let launches: u64 = args.value_or("--launches", 20);
+    let steps: usize = args.value_or("--steps", STEPS);
+    let verbose = args.flag("--verbose");
+    let only: Option<String> = args.value("--world");
+    args.finish();
     println!(
         "{launches} launches x {steps} steps per world, dt 1/60, gravity off, CCD on, TOL {TOL}"
     );

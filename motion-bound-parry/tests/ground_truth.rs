@@ -42,7 +42,7 @@ fn every_pair_of_parry_shapes_is_never_missed_and_never_late() {
     for (_, s) in &shapes {
         cache.try_register(s).expect("every shape converts");
     }
-    let mut rng = Rng(2026);
+    let mut rng = Rng::new(2026);
     let mut total = Tally::default();
     let mut kinds = 0;
     for i in 0..shapes.len() {

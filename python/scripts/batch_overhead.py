@@ -8,7 +8,6 @@ binding makes), serially and on every core, in one sitting.
 Prints, per repeat, both sides' ms per query and the overhead per query, and
 checks that both sides found the same contacts at the same times."""
 
-import argparse
 import os
 import pathlib
 import struct
@@ -25,7 +24,7 @@ sys.path.insert(0, str(pathlib.Path(__file__).parent))
 from meshes import load_bunny  # noqa: E402
 
 sys.path.insert(0, str(pathlib.Path(__file__).parents[1] / "tests"))
-from truth import random_rotation  # noqa: E402
+from devkit import cpu_name, random_rotation, script_parser, unit  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 CONTACT_DISTANCE = 1e-3
@@ -37,11 +36,10 @@ def motions(n, reach, seed):
     rng = np.random.default_rng(seed)
     starts, ends = np.tile(np.eye(4), (n, 1, 1)), np.tile(np.eye(4), (n, 1, 1))
     for i in range(n):
-        d = rng.normal(size=3)
-        a = rng.normal(size=3)
+        d, a = unit(rng), unit(rng)
         starts[i, :3, :3] = random_rotation(rng)
-        starts[i, :3, 3] = d / np.linalg.norm(d) * 2 * reach * rng.uniform(1.1, 1.6)
-        ends[i, :3, 3] = a / np.linalg.norm(a) * 2 * reach * 0.8 * rng.uniform()
+        starts[i, :3, 3] = d * 2 * reach * rng.uniform(1.1, 1.6)
+        ends[i, :3, 3] = a * 2 * reach * 0.8 * rng.uniform()
         axis = rng.normal(size=3)
         axis *= rng.uniform(0, 1.0) / np.linalg.norm(axis)
         k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]])
@@ -61,18 +59,15 @@ def write(path, v, f, starts, ends):
 
 
 def main():
-    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    p.add_argument("--queries", type=int, default=10_000)
-    p.add_argument("--repeats", type=int, default=3)
-    p.add_argument("--seed", type=int, default=7)
+    p = script_parser(__doc__, 10_000, "motions", seed_help="seed of the motions")
+    p.add_argument("--repeats", type=int, default=3, help="repeats of the batch (default 3)")
     args = p.parse_args()
     v, f = load_bunny()
     starts, ends = motions(args.queries, 0.5, args.seed)
     bunny = mb.mesh(v, f)
     still = mb.Motion.still(np.eye(4))
     batch = mb.MotionBatch.between(starts, ends)
-    cpu = next((l.split(":", 1)[1].strip() for l in open("/proc/cpuinfo") if l.startswith("model name")), "?")
-    print(f"bunny {len(f)} triangles, {args.queries} motions, contact distance {CONTACT_DISTANCE}; CPU {cpu}, {os.cpu_count()} cores")
+    print(f"bunny {len(f)} triangles, {args.queries} motions, contact distance {CONTACT_DISTANCE}; CPU {cpu_name()}, {os.cpu_count()} cores")
     with tempfile.TemporaryDirectory() as tmp:
         path = pathlib.Path(tmp) / "batch.bin"
         write(path, v, f, starts, ends)

@@ -100,7 +100,6 @@ fly-by, at a time the meshes are apart; ray shooting is not implemented.
 motion_bound: 0 missed, 0 late, every contact within the contact distance.
 """
 
-import argparse
 import math
 import pathlib
 import sys
@@ -115,8 +114,9 @@ HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 sys.path.insert(0, str(HERE.parent / "tests"))
 from meshes import load_bunny  # noqa: E402
+from devkit import random_rotation, script_parser, unit  # noqa: E402
 from truth import (FclBody, Trajectory, distance, first_time_within, homogeneous,  # noqa: E402
-                   log_rotation, random_rotation, rodrigues)
+                   log_rotation, rodrigues)
 
 RESOLUTION = 1e-6  # the truth's time resolution (truth.first_time_within's default)
 FCL_CA_STEP = 1e-5  # FCL's fixed stopping step in mesh conservative advancement (t_err)
@@ -205,11 +205,6 @@ def knot_scene(queries):
         flybys.append(FlyBy(i, j, *a, *b, motion_a=ma, motion_b=mb_))
     return {"name": "torus knots 2.8K (Table 1)", "meshes": s["meshes"], "flybys": flybys,
             "contact_distance": s["contact_distance"]}
-
-
-def unit(rng):
-    d = rng.normal(size=3)
-    return d / np.linalg.norm(d)
 
 
 def bunny_scene(queries, seed, contact_distance=1e-3):
@@ -392,9 +387,7 @@ def ray_shooting_status(scene):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--queries", type=int, default=50, help="fly-bys per scene (default 50)")
-    parser.add_argument("--seed", type=int, default=7, help="seed of the bunny fly-bys (default 7)")
+    parser = script_parser(__doc__, 50, "fly-bys per scene", seed_help="seed of the bunny fly-bys")
     parser.add_argument("--naive-samples", type=int, default=100,
                         help="poses the naive solver tests (default 100)")
     parser.add_argument("--no-extras", action="store_true",

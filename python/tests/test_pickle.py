@@ -7,7 +7,8 @@ import numpy as np
 
 import motion_bound as mb
 from test_truth import icosphere
-from truth import homogeneous as pose, random_rotation
+from devkit import random_rotation
+from truth import homogeneous as pose
 
 
 def roundtrip(x):

@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 
 import motion_bound as mb
-from truth import FclBody, Trajectory, distance, first_time_within, random_rotation
+from devkit import random_rotation, unit
+from truth import FclBody, Trajectory, distance, first_time_within
 from truth import homogeneous as pose
 
 RESOLUTION = 1e-6
@@ -49,10 +50,8 @@ def icosphere(radius, subdivisions=1):
 
 def fly_by(rng, reach, spin):
     """A flies past B (both spinning), most fly-bys touching, some passing close."""
-    d = rng.normal(size=3)
-    start = d / np.linalg.norm(d) * reach * rng.uniform(1.1, 1.6)
-    a = rng.normal(size=3)
-    aim = a / np.linalg.norm(a) * reach * 0.8 * rng.uniform()
+    start = unit(rng) * reach * rng.uniform(1.1, 1.6)
+    aim = unit(rng) * reach * 0.8 * rng.uniform()
     wa = rng.normal(size=3) * spin / 2
     wb = rng.normal(size=3) * spin / 8
     return (pose(random_rotation(rng), start), aim - start, wa,

@@ -44,15 +44,6 @@ def log_rotation(r):
     return w / (2.0 * math.sin(angle)) * angle
 
 
-def random_rotation(rng):
-    """A uniformly random rotation matrix (a normalised Gaussian quaternion)."""
-    q = rng.normal(size=4)
-    w, x, y, z = q / np.linalg.norm(q)
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)],
-                     [2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)],
-                     [2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)]])
-
-
 def homogeneous(rotation, translation):
     """The 4x4 matrix of a rotation and a translation."""
     m = np.eye(4)

@@ -48,6 +48,7 @@ use motion_bound::testkit::SplitMix64;
 use motion_bound::{
     BallTree, BoundKind, Direction, PreparedMotion, RigidMotion, TriMesh, VertexSet, VertexTree,
 };
+use motion_bound_devkit::Args;
 
 struct Opts {
     quick: bool,
@@ -55,21 +56,15 @@ struct Opts {
 }
 
 fn parse() -> Opts {
-    let mut o = Opts {
-        quick: false,
-        out: PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/report")),
+    let mut args = Args::from_env("report [--quick] [--out DIR]");
+    let o = Opts {
+        quick: args.flag("--quick"),
+        out: args.value_or(
+            "--out",
+            PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/report")),
+        ),
     };
-    let mut args = std::env::args().skip(1);
-    while let Some(a) = args.next() {
-        match a.as_str() {
-            "--quick" => o.quick = true,
-            "--out" => o.out = PathBuf::from(args.next().expect("--out DIR")),
-            other => {
-                eprintln!("unknown argument {other}; use --quick, --out DIR");
-                std::process::exit(2);
-            }
-        }
-    }
+    args.finish();
     o
 }
 

@@ -42,7 +42,6 @@
 //! about 10 minutes on two busy cores (parry and the ground truth at 11K and
 //! 34K take most of it).
 
-use std::process::ExitCode;
 use std::time::Instant;
 
 use motion_bound::bodies::TorusKnotSize;
@@ -78,55 +77,36 @@ struct Args {
     parry_budget: f64,
 }
 
-fn parse_args() -> Result<Args, String> {
+fn parse_args() -> Args {
+    let mut flags = motion_bound_devkit::Args::from_env(
+        "table1 [--queries N] [--spin S] [--parry-queries M] [--truth-queries K] [--samples S] \
+         [--sizes 2.8K,11K,34K] [--parry-budget SECONDS]",
+    );
+    let sizes = flags.value::<String>("--sizes").map(|list| {
+        list.split(',')
+            .map(|s| {
+                TorusKnotSize::ALL
+                    .into_iter()
+                    .find(|&k| label(k) == s.trim())
+                    .unwrap_or_else(|| flags.fail(&format!("unknown size {s} (2.8K, 11K or 34K)")))
+            })
+            .collect()
+    });
     let mut args = Args {
-        queries: 200,
-        spin: SPIN,
-        parry_queries: 10,
-        truth_queries: None,
-        samples: 1000,
-        sizes: TorusKnotSize::ALL.to_vec(),
-        parry_budget: 120.0,
+        queries: flags.value_or("--queries", 200),
+        spin: flags.value_or("--spin", SPIN),
+        parry_queries: flags.value_or("--parry-queries", 10),
+        truth_queries: flags.value("--truth-queries"),
+        samples: flags.value_or("--samples", 1000).max(2),
+        sizes: sizes.unwrap_or_else(|| TorusKnotSize::ALL.to_vec()),
+        parry_budget: flags.value_or("--parry-budget", 120.0),
     };
-    let mut it = std::env::args().skip(1);
-    while let Some(flag) = it.next() {
-        let mut value = || it.next().ok_or_else(|| format!("{flag} needs a value"));
-        let number = |s: String| s.parse::<f64>().map_err(|e| format!("{flag}: {e}"));
-        let count = |s: String| s.parse::<usize>().map_err(|e| format!("{flag}: {e}"));
-        match flag.as_str() {
-            "--queries" => args.queries = count(value()?)?,
-            "--spin" => args.spin = number(value()?)?,
-            "--parry-queries" => args.parry_queries = count(value()?)?,
-            "--truth-queries" => args.truth_queries = Some(count(value()?)?),
-            "--samples" => args.samples = count(value()?)?.max(2),
-            "--parry-budget" => args.parry_budget = number(value()?)?,
-            "--sizes" => {
-                args.sizes = value()?
-                    .split(',')
-                    .map(|s| {
-                        TorusKnotSize::ALL
-                            .into_iter()
-                            .find(|&k| label(k) == s.trim())
-                            .ok_or_else(|| format!("unknown size {s} (2.8K, 11K or 34K)"))
-                    })
-                    .collect::<Result<_, _>>()?;
-            }
-            "-h" | "--help" => {
-                return Err(
-                    "usage: table1 [--queries N] [--spin S] [--parry-queries M] \
-                     [--truth-queries K] [--samples S] [--sizes 2.8K,11K,34K] \
-                     [--parry-budget SECONDS]"
-                        .into(),
-                )
-            }
-            other => return Err(format!("unknown argument {other} (try --help)")),
-        }
-    }
+    flags.finish();
     if args.queries == 0 || !(args.spin.is_finite() && args.spin >= 0.0) {
-        return Err("--queries must be positive and --spin finite and >= 0".into());
+        flags.fail("--queries must be positive and --spin finite and >= 0");
     }
     args.parry_queries = args.parry_queries.min(args.queries);
-    Ok(args)
+    args
 }
 
 /// One bound's results over the query list.
@@ -516,14 +496,8 @@ fn run_size(args: &Args, size: TorusKnotSize, parry_per_triangle: &mut Option<f6
     }
 }
 
-fn main() -> ExitCode {
-    let args = match parse_args() {
-        Ok(a) => a,
-        Err(e) => {
-            eprintln!("{e}");
-            return ExitCode::FAILURE;
-        }
-    };
+fn main() {
+    let args = parse_args();
     println!(
         "Table 1 reproduction: torus knot vs torus knot, conservative advancement (f64), \
          contact distance {CONTACT_DISTANCE:e}, time tolerance 1e-9, at most 100 iterations."
@@ -565,5 +539,4 @@ fn main() -> ExitCode {
             s.evq.2,
         );
     }
-    ExitCode::SUCCESS
 }

@@ -12,42 +12,23 @@ use parry3d_f64::shape::{Ball, Compound, ConvexPolyhedron, Shape, SharedShape, T
 /// Sampled times over the interval, ends included: `SAMPLES + 1`.
 pub const SAMPLES: usize = 256;
 
-/// SplitMix64: a small, seeded, reproducible generator.
-pub struct Rng(pub u64);
+/// The seeded generator (the testkit's SplitMix64, through the workspace's devkit).
+pub use motion_bound_devkit::Rng;
 
-impl Rng {
-    pub fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    pub fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * (self.next() >> 11) as f64 / (1u64 << 53) as f64
-    }
-    pub fn unit(&mut self) -> Vector {
-        loop {
-            let v = Vector::new(
-                self.uniform(-1.0, 1.0),
-                self.uniform(-1.0, 1.0),
-                self.uniform(-1.0, 1.0),
-            );
-            let l = v.length();
-            if l > 0.1 && l <= 1.0 {
-                return v / l;
-            }
-        }
-    }
-    pub fn rotation(&mut self) -> Rotation {
-        Rotation::from_scaled_axis(self.unit() * self.uniform(0.0, std::f64::consts::PI))
-    }
+/// A random unit vector (from the cube, of length more than 0.1 before normalising).
+pub fn unit(rng: &mut Rng) -> Vector {
+    Vector::from(motion_bound_devkit::direction(rng, 0.1))
+}
+
+/// A random rotation: a random axis, an angle in `[0, pi)`.
+pub fn rotation(rng: &mut Rng) -> Rotation {
+    Rotation::from_scaled_axis(unit(rng) * rng.range(0.0, std::f64::consts::PI))
 }
 
 /// The shapes, named; the half-space last.
 pub fn shapes() -> Vec<(&'static str, SharedShape)> {
-    let mut rng = Rng(7);
-    let hull_points: Vec<Vector> = (0..24).map(|_| rng.unit() * 0.3).collect();
+    let mut rng = Rng::new(7);
+    let hull_points: Vec<Vector> = (0..24).map(|_| unit(&mut rng) * 0.3).collect();
     let (sphere_v, sphere_i) = Ball::new(0.3).to_trimesh(10, 10);
     let at = |x: f64, y: f64, z: f64| Pose::from_translation(Vector::new(x, y, z));
     let dumbbell = Compound::new(vec![
@@ -157,47 +138,47 @@ pub fn first_sampled(
 /// A random fly-by: `a` near the origin, `b` launched at it (or, for the
 /// ground, `a` dropped onto it).
 pub fn fly_by(rng: &mut Rng, ground: bool) -> (NonlinearRigidMotion, NonlinearRigidMotion) {
-    let spin = |rng: &mut Rng| rng.unit() * rng.uniform(0.0, 12.0);
-    let local_center = |rng: &mut Rng| rng.unit() * rng.uniform(0.0, 0.1);
-    let start_a = Pose::from_parts(rng.unit() * rng.uniform(0.0, 0.2), rng.rotation());
+    let spin = |rng: &mut Rng| unit(rng) * rng.range(0.0, 12.0);
+    let local_center = |rng: &mut Rng| unit(rng) * rng.range(0.0, 0.1);
+    let start_a = Pose::from_parts(unit(rng) * rng.range(0.0, 0.2), rotation(rng));
     let a = NonlinearRigidMotion::new(
         start_a,
         local_center(rng),
-        rng.unit() * rng.uniform(0.0, 0.5),
+        unit(rng) * rng.range(0.0, 0.5),
         spin(rng),
     );
     if ground {
         let start = Pose::from_parts(
             Vector::new(
-                rng.uniform(-0.5, 0.5),
-                rng.uniform(0.5, 1.5),
-                rng.uniform(-0.5, 0.5),
+                rng.range(-0.5, 0.5),
+                rng.range(0.5, 1.5),
+                rng.range(-0.5, 0.5),
             ),
-            rng.rotation(),
+            rotation(rng),
         );
         let fall = Vector::new(
-            rng.uniform(-0.5, 0.5),
-            -rng.uniform(0.5, 2.0),
-            rng.uniform(-0.5, 0.5),
+            rng.range(-0.5, 0.5),
+            -rng.range(0.5, 2.0),
+            rng.range(-0.5, 0.5),
         );
         let body = NonlinearRigidMotion::new(start, local_center(rng), fall, spin(rng));
         let tilt = Pose::from_parts(
-            Vector::new(0.0, rng.uniform(-0.2, 0.0), 0.0),
-            Rotation::from_scaled_axis(rng.unit() * rng.uniform(0.0, 0.2)),
+            Vector::new(0.0, rng.range(-0.2, 0.0), 0.0),
+            Rotation::from_scaled_axis(unit(rng) * rng.range(0.0, 0.2)),
         );
         let ground = NonlinearRigidMotion::new(
             tilt,
             Vector::ZERO,
-            Vector::new(0.0, rng.uniform(0.0, 0.3), 0.0),
+            Vector::new(0.0, rng.range(0.0, 0.3), 0.0),
             Vector::ZERO,
         );
         return (body, ground);
     }
-    let from = rng.unit() * rng.uniform(1.2, 2.2);
-    let aim = rng.unit() * rng.uniform(0.0, 0.5);
-    let speed = rng.uniform(1.0, 3.5);
+    let from = unit(rng) * rng.range(1.2, 2.2);
+    let aim = unit(rng) * rng.range(0.0, 0.5);
+    let speed = rng.range(1.0, 3.5);
     let b = NonlinearRigidMotion::new(
-        Pose::from_parts(from, rng.rotation()),
+        Pose::from_parts(from, rotation(rng)),
         local_center(rng),
         (aim - from).normalize() * speed,
         spin(rng),
