@@ -202,18 +202,6 @@ fn outcome_name(o: &SegmentOutcome<f64>) -> String {
     }
 }
 
-fn cpu_model() -> String {
-    std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|s| {
-            s.lines()
-                .find(|l| l.starts_with("model name"))
-                .and_then(|l| l.split(':').nth(1))
-                .map(|m| m.trim().to_string())
-        })
-        .unwrap_or_else(|| "unknown".into())
-}
-
 /// The hand-and-pole comparison: the one-pair chain scene, the pole, and
 /// its (still) rigid motion.
 struct PairCase {
@@ -282,7 +270,7 @@ fn length(a: &[f64], b: &[f64]) -> f64 {
 }
 
 fn main() {
-    println!("chain: CPU {}", cpu_model());
+    println!("chain: CPU {}", motion_bound_devkit::cpu_name());
     // The scene of `examples/arm.rs`: boxes meshed in 4 cm cells, Franka's
     // SRDF pairs disabled.
     let (scene, allowed) = arm_scene::arm_scene(arm_scene::Arm::Panda).expect("the Panda scene");

@@ -18,23 +18,8 @@ use motion_bound::chain::{
     Chain, ChainBuilder, ChainError, ChainPair, ChainParams, ChainScene, JointKind, JointSpec,
     Obstacle, SegmentOutcome, UrdfOptions,
 };
+use motion_bound::testkit::toi::Rng;
 use motion_bound::{Pose, TriMesh, Vec3};
-
-/// A seeded generator (splitmix64).
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 53) as f64
-    }
-    fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + self.next() * (hi - lo)
-    }
-}
 
 fn segments() -> usize {
     std::env::var("CHAIN_SEGMENTS")
@@ -58,7 +43,7 @@ struct Tally {
 /// within `limits`; returns the tally (and prints every failure).
 fn check_against_truth(scene: &ChainScene<f64>, limits: &[[f64; 2]], n: usize, seed: u64) -> Tally {
     let truth = Truth::new(scene);
-    let mut rng = Rng(seed);
+    let mut rng = Rng::new(seed);
     let mut tally = Tally::default();
     let free = |rng: &mut Rng| loop {
         let q: Vec<f64> = limits.iter().map(|[lo, hi]| rng.range(*lo, *hi)).collect();
@@ -133,7 +118,7 @@ fn random_chain_scene(rng: &mut Rng, joints: usize) -> ChainScene<f64> {
             0 | 3 => JointKind::Revolute,
             1 => JointKind::Continuous,
             _ => {
-                if rng.next() < 0.5 {
+                if rng.unit() < 0.5 {
                     JointKind::Prismatic
                 } else {
                     JointKind::Fixed
@@ -198,7 +183,7 @@ fn segments_against_sampled_truth_are_never_late_or_missed() {
     eprintln!("panda: {t:?}");
     assert_eq!((t.missed, t.late, t.far), (0, 0, 0), "panda: {t:?}");
     assert!(t.colliding > 0, "the clutter is hit at all: {t:?}");
-    let mut rng = Rng(5);
+    let mut rng = Rng::new(5);
     let mut total = Tally::default();
     for k in 0..6 {
         let scene = random_chain_scene(&mut rng, 2 + k % 5);
@@ -303,7 +288,7 @@ fn f32_chain_contacts_are_never_later_than_the_f64_truth() {
     }
     let truth = Truth::new(&s64);
     let limits = limits_of(s64.chain());
-    let mut rng = Rng(23);
+    let mut rng = Rng::new(23);
     let (mut colliding, mut bad) = (0, 0);
     for _ in 0..segments() {
         let pick = |rng: &mut Rng| -> Vec<f32> {

@@ -28,6 +28,7 @@
 
 use motion_bound::chain::{Chain, ChainBuilder, JointKind, JointSpec};
 use motion_bound::reference::dd::DoubleDouble as D;
+use motion_bound::testkit::toi::Rng;
 use motion_bound::{Float, Pose, TriMesh, Vec3};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
@@ -118,27 +119,20 @@ fn to_f64(a: V) -> [f64; 3] {
 }
 
 // ---------------------------------------------------------------------------
-// A small deterministic generator (SplitMix64).
+// The testkit's deterministic generator (SplitMix64), with the draws these
+// tests need.
 
-struct Rng(u64);
+/// The draws of these tests beyond the testkit's `unit` and `range`.
+trait Draws {
+    fn below(&mut self, n: usize) -> usize;
+    fn chance(&mut self, p: f64) -> bool;
+    fn cube(&mut self, r: f64) -> [f64; 3];
+    fn nonzero_vector(&mut self) -> [f64; 3];
+}
 
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-    /// Uniform in `[0, 1)`.
-    fn unit(&mut self) -> f64 {
-        (self.next() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-    fn range(&mut self, a: f64, b: f64) -> f64 {
-        a + (b - a) * self.unit()
-    }
+impl Draws for Rng {
     fn below(&mut self, n: usize) -> usize {
-        (self.next() % n as u64) as usize
+        (self.next_u64() % n as u64) as usize
     }
     fn chance(&mut self, p: f64) -> bool {
         self.unit() < p
@@ -146,8 +140,9 @@ impl Rng {
     fn cube(&mut self, r: f64) -> [f64; 3] {
         [self.range(-r, r), self.range(-r, r), self.range(-r, r)]
     }
-    /// A nonzero vector, a coordinate axis a quarter of the time.
-    fn direction(&mut self) -> [f64; 3] {
+    /// A nonzero vector, a coordinate axis a quarter of the time (not the
+    /// testkit's unit `direction`).
+    fn nonzero_vector(&mut self) -> [f64; 3] {
         if self.chance(0.25) {
             let mut a = [0.0; 3];
             a[self.below(3)] = if self.chance(0.5) { 1.0 } else { -1.0 };
@@ -197,7 +192,7 @@ fn random_turn(rng: &mut Rng, p_identity: f64) -> ([f64; 3], f64) {
         let s = if rng.chance(0.5) { 1.0 } else { -1.0 };
         return (a, s * core::f64::consts::FRAC_PI_2);
     }
-    (rng.direction(), rng.range(-1.2, 1.2))
+    (rng.nonzero_vector(), rng.range(-1.2, 1.2))
 }
 
 fn random_chain(rng: &mut Rng, max_joints: usize, with_meshes: bool) -> ChainDesc {
@@ -215,7 +210,7 @@ fn random_chain(rng: &mut Rng, max_joints: usize, with_meshes: bool) -> ChainDes
         let axis = match (parent, rng.chance(0.15)) {
             // Parallel to the parent's axis (shoulder and elbow).
             (p, true) if p > 0 => joints[p - 1].axis,
-            _ => rng.direction(),
+            _ => rng.nonzero_vector(),
         };
         let shift = if rng.chance(0.2) {
             [0.0; 3]
@@ -574,10 +569,10 @@ fn random_query(rng: &mut Rng, desc: &ChainDesc, model: &Model) -> Query {
             if norm(v).to_f64() > 1e-6 {
                 to_f64(v)
             } else {
-                rng.direction()
+                rng.nonzero_vector()
             }
         }
-        _ => rng.direction(),
+        _ => rng.nonzero_vector(),
     };
     Query {
         link,
@@ -680,7 +675,7 @@ fn check<T: Float>(
             points.push(add(c, scale_v(unit(nw), rho * sign)));
         }
         for _ in 0..4 {
-            points.push(add(c, scale_v(unit(v_dd(rng.direction())), rho)));
+            points.push(add(c, scale_v(unit(v_dd(rng.nonzero_vector())), rho)));
         }
         for p in points {
             let (vp, _) = model.velocity(&placed, query.link, p);
@@ -701,7 +696,7 @@ fn check<T: Float>(
 }
 
 fn case<T: Float>(seed: u64) -> Result<(), TestCaseError> {
-    let mut rng = Rng(seed);
+    let mut rng = Rng::new(seed);
     let desc = random_chain(&mut rng, 7, false);
     let (_, model, _, _) = build::<T>(&desc);
     let query = random_query(&mut rng, &desc, &model);
@@ -744,7 +739,7 @@ proptest! {
 /// The largest ratio of a placement error to its bound over one chain and
 /// one time, or the violation.
 fn placement<T: Float>(seed: u64) -> Result<f64, String> {
-    let mut rng = Rng(seed);
+    let mut rng = Rng::new(seed);
     let desc = random_chain(&mut rng, 7, true);
     let (chain, model, q0, q1) = build::<T>(&desc);
     let t = T::from_f64(if rng.chance(0.2) { 1.0 } else { rng.unit() });
@@ -787,7 +782,7 @@ fn placement<T: Float>(seed: u64) -> Result<f64, String> {
 /// speed, far below the `1e-9` asked).
 #[test]
 fn oracle_velocity_is_the_derivative_of_its_positions() {
-    let mut rng = Rng(0x05ee_d0f0_ac1e);
+    let mut rng = Rng::new(0x05ee_d0f0_ac1e);
     for _ in 0..200 {
         let desc = random_chain(&mut rng, 7, false);
         let (_, model, _, _) = build::<f64>(&desc);
@@ -820,7 +815,7 @@ fn oracle_velocity_is_the_derivative_of_its_positions() {
 #[test]
 fn stored_unit_axes_are_within_their_budget() {
     fn run<T: Float>() {
-        let mut rng = Rng(0x000a_c5e5);
+        let mut rng = Rng::new(0x000a_c5e5);
         let u = T::UNIT_ROUNDOFF.to_f64();
         let mut worst: f64 = 0.0;
         for _ in 0..400 {
@@ -851,7 +846,7 @@ fn stored_unit_axes_are_within_their_budget() {
 #[test]
 fn tiny_and_huge_directions_give_the_unit_direction_bound() {
     fn run<T: Float>(k: i32) {
-        let mut rng = Rng(0x714e);
+        let mut rng = Rng::new(0x714e);
         for _ in 0..200 {
             let desc = random_chain(&mut rng, 5, false);
             let (chain, model, q0, q1) = build::<T>(&desc);
@@ -895,7 +890,7 @@ fn tiny_and_huge_directions_give_the_unit_direction_bound() {
 /// `2 delta` and the `gamma` factors, about `1e-13` here).
 #[test]
 fn single_fixed_axis_revolute_joint_bound_is_tight() {
-    let mut rng = Rng(0x0007_1647);
+    let mut rng = Rng::new(0x0007_1647);
     let mut worst: f64 = 1.0;
     for _ in 0..300 {
         let mut desc = random_chain(&mut rng, 1, false);
@@ -921,7 +916,7 @@ fn single_fixed_axis_revolute_joint_bound_is_tight() {
         joints.push(JointDesc {
             kind: JointKind::Revolute,
             parent: above,
-            axis: rng.direction(),
+            axis: rng.nonzero_vector(),
             turn: random_turn(&mut rng, 0.3),
             shift: rng.cube(1.0),
             q: [q0, q1],
@@ -999,7 +994,7 @@ fn placement_error_bound_slack_is_reported() {
 /// `1e-9` (a direction the ball never moves along) are counted apart.
 #[test]
 fn chain_bound_excess_over_sampled_supremum_is_reported() {
-    let mut rng = Rng(0x0000_ec55);
+    let mut rng = Rng::new(0x0000_ec55);
     println!("| interval | bound | cases | median | mean | 90th pct | max | sup < 1e-9 |");
     println!("|---|---|---|---|---|---|---|---|");
     for (name, h) in [("[0, 1]", 1.0), ("h = 1/8", 0.125), ("h = 0", 0.0)] {

@@ -720,31 +720,16 @@ mod tests {
 
     const U2: f64 = 1.232_595_164_407_831e-32; // 2^-106
 
-    /// A deterministic generator (SplitMix64), so failures reproduce.
-    struct Rng(u64);
+    /// The testkit's deterministic generator (SplitMix64), so failures
+    /// reproduce (the testkit is on in every test build: the crate's
+    /// self dev-dependency turns it on).
+    use crate::testkit::toi::Rng;
 
-    impl Rng {
-        fn next_u64(&mut self) -> u64 {
-            self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-            let mut z = self.0;
-            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-            z ^ (z >> 31)
-        }
-        /// Uniform in `[0, 1)`.
-        fn unit(&mut self) -> f64 {
-            (self.next_u64() >> 11) as f64 * (1.0 / 9_007_199_254_740_992.0)
-        }
-        /// Uniform in `[a, b)`.
-        fn range(&mut self, a: f64, b: f64) -> f64 {
-            a + (b - a) * self.unit()
-        }
-        /// A double-double with a random tail, in about `[a, b)`.
-        fn dd(&mut self, a: f64, b: f64) -> DoubleDouble {
-            let hi = self.range(a, b);
-            let ulp = ulp(hi);
-            DoubleDouble::new(hi, self.range(-0.5, 0.5) * ulp)
-        }
+    /// A double-double with a random tail, in about `[a, b)`.
+    fn random_dd(g: &mut Rng, a: f64, b: f64) -> DoubleDouble {
+        let hi = g.range(a, b);
+        let ulp = ulp(hi);
+        DoubleDouble::new(hi, g.range(-0.5, 0.5) * ulp)
     }
 
     fn ulp(x: f64) -> f64 {
@@ -771,7 +756,7 @@ mod tests {
 
     #[test]
     fn two_sum_and_quick_two_sum_are_exact_on_integers() {
-        let mut g = Rng(1);
+        let mut g = Rng::new(1);
         for _ in 0..10_000 {
             // integers up to 2^62, so the sums need more than 53 bits
             let a = (g.next_u64() >> 2) as f64;
@@ -795,7 +780,7 @@ mod tests {
 
     #[test]
     fn two_prod_is_exact_on_integers() {
-        let mut g = Rng(2);
+        let mut g = Rng::new(2);
         for _ in 0..10_000 {
             // integers below 2^50 have products below 2^100: exact in i128
             let a = (g.next_u64() >> (14 + g.next_u64() % 30)) as f64;
@@ -817,7 +802,7 @@ mod tests {
 
     #[test]
     fn add_and_mul_are_exact_when_the_result_fits() {
-        let mut g = Rng(3);
+        let mut g = Rng::new(3);
         for _ in 0..10_000 {
             // a = a1 + a0 and b = b1 + b0 with integer parts; sums below 2^100
             let a1 = ((g.next_u64() >> 20) as f64) * 2f64.powi(50);
@@ -847,12 +832,12 @@ mod tests {
 
     #[test]
     fn division_and_product_identities_hold_to_a_few_u2() {
-        let mut g = Rng(4);
+        let mut g = Rng::new(4);
         let mut worst = 0.0f64;
         for _ in 0..20_000 {
             let scale = 2f64.powi((g.next_u64() % 80) as i32 - 40);
-            let a = g.dd(-1.0, 1.0) * scale;
-            let b = g.dd(0.1, 10.0);
+            let a = random_dd(&mut g, -1.0, 1.0) * scale;
+            let b = random_dd(&mut g, 0.1, 10.0);
             let b = if g.next_u64() & 1 == 0 { b } else { -b };
             let q = a / b;
             assert!(is_normalised(q), "{q:?} normalised");
@@ -894,10 +879,10 @@ mod tests {
         assert_eq!(DoubleDouble::from_f64(4.0).sqrt(), two, "sqrt 4");
         assert_eq!(DoubleDouble::ZERO.sqrt(), DoubleDouble::ZERO, "sqrt 0");
         assert!(DoubleDouble::from_f64(-1.0).sqrt().is_nan(), "sqrt -1");
-        let mut g = Rng(5);
+        let mut g = Rng::new(5);
         let mut worst = 0.0f64;
         for _ in 0..10_000 {
-            let a = g.dd(0.0, 1.0) * 2f64.powi((g.next_u64() % 200) as i32 - 100);
+            let a = random_dd(&mut g, 0.0, 1.0) * 2f64.powi((g.next_u64() % 200) as i32 - 100);
             let r = a.sqrt();
             assert!(is_normalised(r), "{r:?} normalised");
             worst = worst.max(rel(r * r, a));
@@ -921,9 +906,9 @@ mod tests {
         assert_eq!(f(big, 3.25), dd(big, 3.0), "floor 2^60 + 3.25");
         assert_eq!(f(-big, -3.25), dd(-big, -4.0), "floor -2^60 - 3.25");
         assert!(f(f64::INFINITY, 0.0).hi.is_infinite(), "floor inf");
-        let mut g = Rng(6);
+        let mut g = Rng::new(6);
         for _ in 0..10_000 {
-            let x = g.dd(-1e6, 1e6);
+            let x = random_dd(&mut g, -1e6, 1e6);
             let fl = x.floor();
             assert!(fl <= x && x < fl + 1.0, "floor({x:?}) = {fl:?}");
             assert_eq!(fl.floor(), fl, "floor is an integer");
@@ -1070,13 +1055,13 @@ mod tests {
 
     #[test]
     fn pythagoras_and_agreement_with_f64() {
-        let mut g = Rng(7);
+        let mut g = Rng::new(7);
         let mut worst = 0.0f64;
         for i in 0..20_000 {
             let x = if i % 2 == 0 {
-                g.dd(-1e6, 1e6)
+                random_dd(&mut g, -1e6, 1e6)
             } else {
-                g.dd(-4.0, 4.0)
+                random_dd(&mut g, -4.0, 4.0)
             };
             let (s, c) = x.sin_cos();
             assert_eq!(s, x.sin(), "sin_cos agrees with sin at {x:?}");
@@ -1172,10 +1157,10 @@ mod tests {
             "atan2(-1e-10, 1)"
         );
         // round trip through sin and cos
-        let mut g = Rng(8);
+        let mut g = Rng::new(8);
         let mut worst = 0.0f64;
         for _ in 0..5_000 {
-            let t = g.dd(-3.1, 3.1);
+            let t = random_dd(&mut g, -3.1, 3.1);
             let r = g.range(1e-3, 1e3);
             let (s, c) = t.sin_cos();
             worst = worst.max(err((s * r).atan2(c * r), t));
@@ -1201,10 +1186,10 @@ mod tests {
         }
         let a = dd(1.266_103_672_779_499_2, -7.783_137_368_524_88e-17);
         assert!(rel(d(0.3).acos(), a) < 2.0 * U2, "acos(0.3)");
-        let mut g = Rng(9);
+        let mut g = Rng::new(9);
         let mut worst = 0.0f64;
         for _ in 0..5_000 {
-            let x = g.dd(-1.0, 1.0);
+            let x = random_dd(&mut g, -1.0, 1.0);
             worst = worst.max(err(x.acos().cos(), x));
         }
         assert!(worst < 1e-31, "worst cos(acos x) - x: {worst:e}");
