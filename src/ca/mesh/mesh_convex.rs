@@ -1,10 +1,10 @@
 //! Conservative advancement of a triangle mesh against a convex shape or a
 //! half-space: one hierarchy descended against one volume.
 
-use super::mesh_mesh::Found;
-use super::queue::{NodeStep, Pending, Queued};
-use super::traversal::{Placed, PlacedNode};
-use super::{MeshWorkspace, TraversalStats};
+use super::found::{Found, NodeStep};
+use super::placed::{Placed, PlacedNode};
+use super::queue::{MeshWorkspace, Pending, Queued};
+use super::stats::TraversalStats;
 use crate::bvh::{BallTree, Hierarchy};
 use crate::ca::convex_convex::PlacedCore;
 use crate::ca::convex_half_space::check_half_space;

@@ -1,11 +1,12 @@
 //! Conservative advancement of two triangle meshes through their ball trees.
 
-use super::queue::{NodeStep, Pending, Queued};
+use super::found::{Found, NodeStep};
+use super::placed::{slab_gap, Placed, Rates};
+use super::queue::{MeshWorkspace, Pending, Queued};
 use super::seeds::Seeds;
-use super::traversal::{slab_gap, Placed, Rates};
-use super::{MeshWorkspace, TraversalStats};
+use super::stats::TraversalStats;
 use crate::bvh::{BallTree, Hierarchy};
-use crate::ca::{CaError, CaParams, CaStep, MeshParams, StepResult, Witness, WitnessSearch, Work};
+use crate::ca::{CaError, CaParams, CaStep, MeshParams, StepResult, WitnessSearch, Work};
 use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down};
 use crate::{Direction, Float, PreparedMotion};
 
@@ -402,33 +403,5 @@ impl<T: Float> MeshPair<'_, T> {
     fn out_of_work(&self, start: TraversalStats, budget: Work) -> bool {
         self.stats.node_pairs - start.node_pairs >= budget.node_pairs
             || self.stats.triangle_pairs - start.triangle_pairs >= budget.triangle_pairs
-    }
-}
-
-/// What one step's measured triangle pairs found.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Found<T> {
-    /// The closest pair measured, and its triangles.
-    pub(super) closest: Option<Witness<T>>,
-    pub(super) closest_triangles: Option<(u32, u32)>,
-    /// The direction of the pair with the least step.
-    pub(super) normal: Option<Direction<T>>,
-    /// The closest pair within the contact distance, if any: its witness,
-    /// triangles and direction.
-    pub(super) touching: Option<Witness<T>>,
-    pub(super) touching_triangles: Option<(u32, u32)>,
-    pub(super) touching_normal: Option<Direction<T>>,
-}
-
-impl<T> Default for Found<T> {
-    fn default() -> Self {
-        Self {
-            closest: None,
-            closest_triangles: None,
-            normal: None,
-            touching: None,
-            touching_triangles: None,
-            touching_normal: None,
-        }
     }
 }
