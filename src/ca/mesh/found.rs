@@ -4,7 +4,7 @@
 use crate::ca::Witness;
 use crate::Direction;
 
-/// What the safe step of a node pair found (`MeshPair::node_step`,
+/// What the safe step of a node pair found (`Descent::node_step`,
 /// `MeshConvexPair::node_step`).
 #[derive(Clone, Copy, Debug)]
 pub(super) enum NodeStep<T> {

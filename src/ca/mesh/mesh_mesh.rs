@@ -5,7 +5,8 @@ use super::placed::{slab_gap, Placed, Rates};
 use super::queue::{MeshWorkspace, Pending, Queued};
 use super::seeds::Seeds;
 use super::stats::TraversalStats;
-use crate::bvh::{BallTree, Hierarchy};
+use super::traversal::Descent;
+use crate::bvh::BallTree;
 use crate::ca::{CaError, CaParams, CaStep, MeshParams, StepResult, WitnessSearch, Work};
 use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down};
 use crate::{Direction, Float, PreparedMotion};
@@ -35,20 +36,14 @@ use crate::{Direction, Float, PreparedMotion};
 /// knots). Any seeds are sound, so a pair may be reused across queries.
 #[derive(Debug)]
 pub struct MeshPair<'a, T> {
-    /// The hierarchies descended (`BallTree::against`).
-    pub(super) a: &'a Hierarchy<T>,
-    pub(super) b: &'a Hierarchy<T>,
+    /// The hierarchies descended, with the work counters and the seeds.
+    descent: Descent<'a, T>,
     /// Whether A's and B's hierarchies are those of pieces.
-    pub(super) pieces: (bool, bool),
+    pieces: (bool, bool),
     /// The queue and the placed nodes: scratch space, reusable.
-    pub(super) ws: MeshWorkspace<T>,
-    pub(super) stats: TraversalStats,
-    pub(super) accept: T,
-    pub(super) far_ratio: T,
-    pub(super) closest: Option<(u32, u32)>,
-    /// The leaf pairs with the least steps found by the last step, measured
-    /// first by the next one.
-    pub(super) seeds: Seeds,
+    ws: MeshWorkspace<T>,
+    accept: T,
+    closest: Option<(u32, u32)>,
 }
 
 impl<'a, T: Float> MeshPair<'a, T> {
@@ -57,15 +52,17 @@ impl<'a, T: Float> MeshPair<'a, T> {
     pub fn new(a: &'a BallTree<T>, b: &'a BallTree<T>) -> Self {
         let (ha, hb) = (a.against(b), b.against(a));
         Self {
-            a: ha,
-            b: hb,
+            descent: Descent {
+                a: ha,
+                b: hb,
+                far_ratio: MeshParams::<T>::default().far_ratio,
+                stats: TraversalStats::default(),
+                seeds: Seeds::default(),
+            },
             pieces: (!core::ptr::eq(ha, &a.whole), !core::ptr::eq(hb, &b.whole)),
             ws: MeshWorkspace::new(),
-            stats: TraversalStats::default(),
             accept: MeshParams::<T>::default().accept_fraction,
-            far_ratio: MeshParams::<T>::default().far_ratio,
             closest: None,
-            seeds: Seeds::default(),
         }
     }
 
@@ -118,7 +115,7 @@ impl<'a, T: Float> MeshPair<'a, T> {
     pub fn try_with_params(mut self, params: MeshParams<T>) -> Result<Self, CaError> {
         params.validate()?;
         self.accept = params.accept_fraction;
-        self.far_ratio = params.far_ratio;
+        self.descent.far_ratio = params.far_ratio;
         Ok(self)
     }
 
@@ -151,12 +148,12 @@ impl<'a, T: Float> MeshPair<'a, T> {
     /// The work done since the pair was made or last reset.
     #[must_use]
     pub const fn stats(&self) -> TraversalStats {
-        self.stats
+        self.descent.stats
     }
 
     /// Resets the work counters.
     pub fn reset_stats(&mut self) {
-        self.stats = TraversalStats::default();
+        self.descent.stats = TraversalStats::default();
     }
 }
 
@@ -168,7 +165,10 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         b: &PreparedMotion<T>,
         params: &CaParams<T>,
     ) -> StepResult<T> {
-        let (pa, pb) = (Placed::new(self.a, a, t), Placed::new(self.b, b, t));
+        let (pa, pb) = (
+            Placed::new(self.descent.a, a, t),
+            Placed::new(self.descent.b, b, t),
+        );
         let rates = Rates {
             kind: params.bound.cheap_kind(),
             one_sided: params.one_sided,
@@ -189,28 +189,31 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         // Bodies so small that their squared lengths underflow: their balls
         // and bounds are the underflow allowances' (section "Resolution").
         let least = least_resolved_reach::<T>();
-        if self.a.reach < least || self.b.reach < least {
+        if self.descent.a.reach < least || self.descent.b.reach < least {
             return StepResult::PrecisionLimit {
                 resolution: resolution.max_nan(least),
             };
         }
         let mut found = Found::default();
         let first_only = params.witness == WitnessSearch::First;
-        let start = self.stats;
+        let start = self.descent.stats;
         let budget = params.work_budget;
         // The previous step's leaf pairs with the least steps are measured
         // first (Lemma 9.4): each one's own step is safe for that pair, and,
         // usually close to the final step, it lets the descent prune children
         // as they are made.
         self.closest = None;
-        let seed = core::mem::take(&mut self.seeds);
+        let seed = core::mem::take(&mut self.descent.seeds);
         for &(i, j) in &seed.pairs[..seed.len] {
             if self.out_of_work(start, budget) {
                 break;
             }
             let (i, j) = (i as usize, j as usize);
-            let corners = (pa.corners(&self.a.leaves[i]), pb.corners(&self.b.leaves[j]));
-            self.triangle_pair(
+            let corners = (
+                pa.corners(&self.descent.a.leaves[i]),
+                pb.corners(&self.descent.b.leaves[j]),
+            );
+            self.descent.triangle_pair(
                 (&pa, &pb),
                 (i, j),
                 (&corners.0, &corners.1),
@@ -220,8 +223,8 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         }
         self.ws.clear();
         let roots = (
-            self.ws.placed_slot(0, 0, || pa.place(self.a, 0)),
-            self.ws.placed_slot(1, 0, || pb.place(self.b, 0)),
+            self.ws.placed_slot(0, 0, || pa.place(self.descent.a, 0)),
+            self.ws.placed_slot(1, 0, || pb.place(self.descent.b, 0)),
         );
         let root = if limited {
             NodeStep::Apart {
@@ -253,7 +256,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             } else if !near && key >= best * self.accept {
                 // Best-first: every pair left has a step at least `key`, so
                 // `min(best, key)` is safe for the whole meshes.
-                self.stats.pruned += self.ws.len() as u64 + 1;
+                self.descent.stats.pruned += self.ws.len() as u64 + 1;
                 best = best.min_nan(key);
                 break;
             }
@@ -265,22 +268,25 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 }
                 return StepResult::WorkLimit;
             }
-            self.stats.node_pairs += 1;
+            self.descent.stats.node_pairs += 1;
             if far {
                 // Splitting a pair this far apart for its size would gain
                 // little: its own step is safe for everything below it.
-                self.stats.settled += 1;
+                self.descent.stats.settled += 1;
                 best = best.min_nan(key);
                 continue;
             }
-            let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
+            let (na, nb) = (
+                &self.descent.a.nodes[i as usize],
+                &self.descent.b.nodes[j as usize],
+            );
             let (leaf_a, leaf_b) = (na.leaf(), nb.leaf());
             if let (Some(li), Some(lj)) = (leaf_a, leaf_b) {
                 if seed.contains((li as u32, lj as u32)) {
                     // Measured before the descent: its step is in `best`.
                     continue;
                 }
-                let (la, lb) = (&self.a.leaves[li], &self.b.leaves[lj]);
+                let (la, lb) = (&self.descent.a.leaves[li], &self.descent.b.leaves[lj]);
                 let (ta, tb) = (pa.corners(la), pb.corners(lb));
                 // Cheap first: the corners' slab along the line joining the
                 // ball centres (Lemma 9.1 holds for any direction).
@@ -295,21 +301,21 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                     if let Some(touch) = found.touching {
                         // The slab's gap is a lower bound of the distance.
                         if g >= touch.distance {
-                            self.stats.pruned += 1;
+                            self.descent.stats.pruned += 1;
                             continue;
                         }
                     } else if g > cd {
                         // A pair certainly farther apart than the contact
                         // distance is pruned when its step reaches the best.
-                        self.stats.bounds += 2;
+                        self.descent.stats.bounds += 2;
                         let (mu_a, mu_b) = rates.leaves(&pa, &pb, (la, lb), n);
                         if step_down(g, clear, mu_a, mu_b) >= best {
-                            self.stats.pruned += 1;
+                            self.descent.stats.pruned += 1;
                             continue;
                         }
                     }
                 }
-                self.triangle_pair(
+                self.descent.triangle_pair(
                     (&pa, &pb),
                     (li, lj),
                     (&ta, &tb),
@@ -329,10 +335,14 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             for child in [left, right] {
                 // Place the new node once per step; the kept one is placed.
                 let (pair, at) = if split_a {
-                    let slot = self.ws.placed_slot(0, child, || pa.place(self.a, child));
+                    let slot = self
+                        .ws
+                        .placed_slot(0, child, || pa.place(self.descent.a, child));
                     ((child, j), (slot, at.1))
                 } else {
-                    let slot = self.ws.placed_slot(1, child, || pb.place(self.b, child));
+                    let slot = self
+                        .ws
+                        .placed_slot(1, child, || pb.place(self.descent.b, child));
                     ((i, child), (at.0, slot))
                 };
                 let q = (self.ws.placed[at.0 as usize], self.ws.placed[at.1 as usize]);
@@ -348,7 +358,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 // Below the resolution no pair is near: one within the
                 // clearance (or unseparated) is a zero step.
                 let near_within = if limited { -T::INFINITY } else { cd };
-                let step = match self.node_step(
+                let step = match self.descent.node_step(
                     &pa,
                     &pb,
                     pair,
@@ -366,8 +376,10 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                     (NodeStep::Near(g), Some(touch)) if g < touch.distance => {
                         self.ws.enqueue(Pending::new(step, pair, at));
                     }
-                    (_, Some(_)) => self.stats.pruned += 1,
-                    (NodeStep::Apart { step, .. }, None) if step >= best => self.stats.pruned += 1,
+                    (_, Some(_)) => self.descent.stats.pruned += 1,
+                    (NodeStep::Apart { step, .. }, None) if step >= best => {
+                        self.descent.stats.pruned += 1
+                    }
                     (found, None) => self.ws.enqueue(Pending::new(found, pair, at)),
                 }
             }
@@ -391,7 +403,10 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
     }
 
     fn work(&self) -> Work {
-        Work::new(self.stats.node_pairs, self.stats.triangle_pairs)
+        Work::new(
+            self.descent.stats.node_pairs,
+            self.descent.stats.triangle_pairs,
+        )
     }
 }
 
@@ -401,7 +416,7 @@ impl<T: Float> MeshPair<'_, T> {
     /// most one triangle pair), so a step never does more than its budget.
     #[inline]
     fn out_of_work(&self, start: TraversalStats, budget: Work) -> bool {
-        self.stats.node_pairs - start.node_pairs >= budget.node_pairs
-            || self.stats.triangle_pairs - start.triangle_pairs >= budget.triangle_pairs
+        self.descent.stats.node_pairs - start.node_pairs >= budget.node_pairs
+            || self.descent.stats.triangle_pairs - start.triangle_pairs >= budget.triangle_pairs
     }
 }

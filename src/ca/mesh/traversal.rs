@@ -3,8 +3,10 @@
 //! and 9.2).
 
 use super::found::{Found, NodeStep};
-use super::mesh_mesh::MeshPair;
 use super::placed::{slab_gap, Placed, PlacedNode, Rates};
+use super::seeds::Seeds;
+use super::stats::TraversalStats;
+use crate::bvh::Hierarchy;
 use crate::ca::driver::gap_step;
 use crate::ca::Witness;
 use crate::geometry::closest::triangle_triangle_vec;
@@ -27,7 +29,25 @@ fn near_points_direction<T: Float>(qa: &PlacedNode<T>, qb: &PlacedNode<T>) -> Op
     Direction::try_new_fast(p_b - p_a).ok()
 }
 
-impl<T: Float> MeshPair<'_, T> {
+/// What the descent of a [`MeshPair`](super::MeshPair) measures and
+/// keeps: the two hierarchies and the far ratio, with the work counters and
+/// the leaf pairs handed to the next step that its measurements write.
+#[derive(Debug)]
+pub(super) struct Descent<'a, T> {
+    /// The hierarchies descended (`BallTree::against`).
+    pub(super) a: &'a Hierarchy<T>,
+    pub(super) b: &'a Hierarchy<T>,
+    /// A node pair whose gap is at least this many times the sum of its
+    /// balls' radii is settled with its own step
+    /// ([`MeshParams::far_ratio`](crate::ca::MeshParams::far_ratio)).
+    pub(super) far_ratio: T,
+    pub(super) stats: TraversalStats,
+    /// The leaf pairs with the least steps found by the last step, measured
+    /// first by the next one.
+    pub(super) seeds: Seeds,
+}
+
+impl<T: Float> Descent<'_, T> {
     /// The safe step of a node pair (Lemma 9.1): the larger gap between the
     /// placed nodes along two directions (the line joining the box centres,
     /// where the balls' gap counts too, and the direction between the
