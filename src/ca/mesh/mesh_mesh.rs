@@ -1,6 +1,6 @@
 //! Conservative advancement of two triangle meshes through their ball trees.
 
-use super::found::{Found, NodeStep};
+use super::found::{Found, Head, NodeStep};
 use super::placed::{slab_gap, Placed, Rates};
 use super::queue::{MeshWorkspace, Pending, Queued};
 use super::seeds::Seeds;
@@ -205,7 +205,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         self.closest = None;
         let seed = core::mem::take(&mut self.descent.seeds);
         for &(i, j) in &seed.pairs[..seed.len] {
-            if self.out_of_work(start, budget) {
+            if self.descent.stats.out_of_work(&start, budget) {
                 break;
             }
             let (i, j) = (i as usize, j as usize);
@@ -226,14 +226,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
             self.ws.placed_slot(0, 0, || pa.place(self.descent.a, 0)),
             self.ws.placed_slot(1, 0, || pb.place(self.descent.b, 0)),
         );
-        let root = if limited {
-            NodeStep::Apart {
-                step: T::ZERO,
-                far: false,
-            }
-        } else {
-            NodeStep::Near(-T::INFINITY)
-        };
+        let root = NodeStep::Near(-T::INFINITY).resolved(limited);
         self.ws.enqueue(Pending::new(root, (0, 0), roots));
         while let Some(Queued { slot, .. }) = self.ws.pop() {
             let Pending {
@@ -245,28 +238,16 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 at,
             } = self.ws.pending[slot as usize];
             let key = T::from_f64(key.0);
-            if let Some(touch) = found.touching {
-                // A contact is found: the rest is a branch and bound for the
-                // closest pair. Near pairs come first, least certified gap
-                // (a lower bound of their distance) first; every other pair
-                // is farther than the contact distance.
-                if first_only || !near || key >= touch.distance {
+            let out_of_work = self.descent.stats.out_of_work(&start, budget);
+            match found.head((near, key), (best, self.accept), first_only, out_of_work) {
+                Head::Go => {}
+                Head::Stop => break,
+                Head::Cut => {
+                    self.descent.stats.pruned += self.ws.len() as u64 + 1;
+                    best = best.min_nan(key);
                     break;
                 }
-            } else if !near && key >= best * self.accept {
-                // Best-first: every pair left has a step at least `key`, so
-                // `min(best, key)` is safe for the whole meshes.
-                self.descent.stats.pruned += self.ws.len() as u64 + 1;
-                best = best.min_nan(key);
-                break;
-            }
-            if self.out_of_work(start, budget) {
-                // Out of work: a contact already found stands (its witness
-                // the closest pair so far); anything else is undecided.
-                if found.touching.is_some() {
-                    break;
-                }
-                return StepResult::WorkLimit;
+                Head::OutOfWork => return StepResult::WorkLimit,
             }
             self.descent.stats.node_pairs += 1;
             if far {
@@ -358,65 +339,29 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 // Below the resolution no pair is near: one within the
                 // clearance (or unseparated) is a zero step.
                 let near_within = if limited { -T::INFINITY } else { cd };
-                let step = match self.descent.node_step(
-                    &pa,
-                    &pb,
-                    pair,
-                    q,
-                    (rates, near_within, clear),
-                    (best_step, also),
-                ) {
-                    NodeStep::Near(_) if limited => NodeStep::Apart {
-                        step: T::ZERO,
-                        far: false,
-                    },
-                    other => other,
-                };
-                match (step, found.touching) {
-                    (NodeStep::Near(g), Some(touch)) if g < touch.distance => {
-                        self.ws.enqueue(Pending::new(step, pair, at));
-                    }
-                    (_, Some(_)) => self.descent.stats.pruned += 1,
-                    (NodeStep::Apart { step, .. }, None) if step >= best => {
-                        self.descent.stats.pruned += 1
-                    }
-                    (found, None) => self.ws.enqueue(Pending::new(found, pair, at)),
+                let step = self
+                    .descent
+                    .node_step(
+                        &pa,
+                        &pb,
+                        pair,
+                        q,
+                        (rates, near_within, clear),
+                        (best_step, also),
+                    )
+                    .resolved(limited);
+                if found.queues(step, best) {
+                    self.ws.enqueue(Pending::new(step, pair, at));
+                } else {
+                    self.descent.stats.pruned += 1;
                 }
             }
         }
-        if let Some(witness) = found.touching {
-            self.closest = found.touching_triangles;
-            return StepResult::Touching {
-                witness,
-                normal: found.touching_normal,
-            };
-        }
-        self.closest = found.closest_triangles;
-        if limited && best <= T::ZERO {
-            return StepResult::PrecisionLimit { resolution };
-        }
-        StepResult::Advance {
-            step: best,
-            witness: found.closest,
-            normal: found.normal,
-        }
+        self.closest = found.witness_triangles();
+        found.verdict(best, limited, resolution)
     }
 
     fn work(&self) -> Work {
-        Work::new(
-            self.descent.stats.node_pairs,
-            self.descent.stats.triangle_pairs,
-        )
-    }
-}
-
-impl<T: Float> MeshPair<'_, T> {
-    /// Whether the work since the counters read `start` has used up either
-    /// count of `budget`: checked before every node pair (which measures at
-    /// most one triangle pair), so a step never does more than its budget.
-    #[inline]
-    fn out_of_work(&self, start: TraversalStats, budget: Work) -> bool {
-        self.descent.stats.node_pairs - start.node_pairs >= budget.node_pairs
-            || self.descent.stats.triangle_pairs - start.triangle_pairs >= budget.triangle_pairs
+        self.descent.stats.work()
     }
 }

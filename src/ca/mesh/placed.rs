@@ -135,6 +135,7 @@ impl<'p, T: Float> Placed<'p, T> {
         }
     }
 
+    #[inline]
     pub(super) fn leaf_speed(&self, leaf: &Leaf<T>, n: Direction<T>, kind: BoundKind) -> T {
         let probe = self.motion.probe(n);
         let speed = match kind {
@@ -145,6 +146,7 @@ impl<'p, T: Float> Placed<'p, T> {
     }
 
     /// The one-sided rate of a leaf's corners along `n`.
+    #[inline]
     pub(super) fn leaf_rate(&self, leaf: &Leaf<T>, n: Direction<T>, kind: BoundKind) -> T {
         let rate = self
             .motion
@@ -185,6 +187,7 @@ impl Rates {
         }
     }
 
+    #[inline]
     pub(super) fn leaves<T: Float>(
         self,
         pa: &Placed<'_, T>,

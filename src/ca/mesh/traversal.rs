@@ -59,6 +59,7 @@ impl<T: Float> Descent<'_, T> {
     /// is a [`NodeStep::Near`] candidate: triangles below it may be within
     /// the contact distance now, so it is split whatever its step, nearest
     /// first.
+    #[inline]
     pub(super) fn node_step(
         &mut self,
         pa: &Placed<'_, T>,
@@ -151,32 +152,13 @@ impl<T: Float> Descent<'_, T> {
             on_a: Point3::from_vec3(cp.on_a),
             on_b: Point3::from_vec3(cp.on_b),
         };
+        let dir = Direction::try_new(cp.on_b - cp.on_a).ok();
         let triangles = Some((la.triangle, lb.triangle));
-        let dir = Direction::try_new(cp.on_b - cp.on_a);
-        if found
-            .closest
-            .is_none_or(|b: Witness<T>| w.distance < b.distance)
-        {
-            found.closest = Some(w);
-            found.closest_triangles = triangles;
-        }
-        // Within the contact distance (or touching: no direction): a
-        // contact, kept if it is the closest so far.
-        let (Ok(n), true) = (dir, cp.distance > contact_distance) else {
-            if found
-                .touching
-                .is_none_or(|b: Witness<T>| w.distance < b.distance)
-            {
-                found.touching = Some(w);
-                found.touching_triangles = triangles;
-                found.touching_normal = dir.ok();
-            }
+        // Within the contact distance (or touching: no direction) a
+        // contact; else its own step along its closest direction.
+        let Some(n) = found.keep(w, triangles, dir, cp.distance > contact_distance) else {
             return;
         };
-        if found.touching.is_some() {
-            // The search for the closest pair needs no steps.
-            return;
-        }
         let nv = n.get();
         self.stats.bounds += 2;
         let mu = rates.leaves(pa, pb, (la, lb), n);
@@ -184,10 +166,7 @@ impl<T: Float> Descent<'_, T> {
         let err = (pa.leaf_err(la), pb.leaf_err(lb));
         let (step, _) = gap_step(gap, clearance, err, (pa.reach, pb.reach), mu);
         self.seeds.insert(step.to_f64(), (i as u32, j as u32));
-        if step < *best {
-            *best = step;
-            found.normal = Some(n);
-        }
+        found.fold(step, n, best);
     }
 }
 
