@@ -24,7 +24,7 @@ pub struct TraversalStats {
     /// and two per measured triangle pair.
     pub bounds: u64,
     /// Node pairs far apart for their size, whose own step was taken
-    /// without splitting them ([`MeshParams::far_ratio`](super::MeshParams::far_ratio)).
+    /// without splitting them ([`MeshParams::far_ratio`](crate::ca::MeshParams::far_ratio)).
     pub settled: u64,
     /// Child node pairs whose volumes no tested direction separates (a zero
     /// safe step): they can only be split.

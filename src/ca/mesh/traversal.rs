@@ -1,6 +1,6 @@
-//! One step's descent: placing nodes, the safe step of a node pair, and the
-//! exact measurement of a triangle pair (`proofs/09-ca-toi.md`, Lemmas 9.1
-//! and 9.2).
+//! What the descent of two meshes measures ([`Descent`]): the safe step of
+//! a node pair, and the exact measurement of a triangle pair
+//! (`proofs/09-ca-toi.md`, Lemmas 9.1 and 9.2).
 
 use super::found::{Found, NodeStep};
 use super::placed::{slab_gap, Placed, PlacedNode, Rates};
