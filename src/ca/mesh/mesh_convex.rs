@@ -1,10 +1,10 @@
 //! Conservative advancement of a triangle mesh against a convex shape or a
 //! half-space: one hierarchy descended against one volume.
 
-use super::mesh_mesh::Found;
-use super::queue::{NodeStep, Pending, Queued};
-use super::traversal::{Placed, PlacedNode};
-use super::{MeshWorkspace, TraversalStats};
+use super::found::{Found, Head, NodeStep};
+use super::placed::{Placed, PlacedNode};
+use super::queue::{MeshWorkspace, Pending, Queued};
+use super::stats::TraversalStats;
 use crate::bvh::{BallTree, Hierarchy};
 use crate::ca::convex_convex::PlacedCore;
 use crate::ca::convex_half_space::check_half_space;
@@ -187,39 +187,21 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
         let mut found = Found::default();
         self.ws.clear();
         self.ws.placed.push(pa.place(self.mesh, 0));
-        let root = if limited {
-            NodeStep::Apart {
-                step: T::ZERO,
-                far: false,
-            }
-        } else {
-            NodeStep::Near(-T::INFINITY)
-        };
+        let root = NodeStep::Near(-T::INFINITY).resolved(limited);
         self.ws.enqueue(Pending::new(root, (0, 0), (0, 0)));
         while let Some(Queued { slot, .. }) = self.ws.pop() {
-            let Pending {
-                near, key, i, at, ..
-            } = self.ws.pending[slot as usize];
+            let Pending { near, key, i, .. } = self.ws.pending[slot as usize];
             let key = T::from_f64(key.0);
-            if let Some(touch) = found.touching {
-                if first_only || !near || key >= touch.distance {
+            let out_of_work = self.stats.out_of_work(&start, budget);
+            match found.head((near, key), (best, T::ONE), first_only, out_of_work) {
+                Head::Go => {}
+                Head::Stop => break,
+                Head::Cut => {
+                    self.stats.pruned += self.ws.len() as u64 + 1;
+                    best = best.min_nan(key);
                     break;
                 }
-            } else if !near && key >= best {
-                self.stats.pruned += self.ws.len() as u64 + 1;
-                best = best.min_nan(key);
-                break;
-            }
-            let used = Work::new(
-                self.stats.node_pairs - start.node_pairs,
-                self.stats.triangle_pairs - start.triangle_pairs,
-            );
-            if used.node_pairs >= budget.node_pairs || used.triangle_pairs >= budget.triangle_pairs
-            {
-                if found.touching.is_some() {
-                    break;
-                }
-                return StepResult::WorkLimit;
+                Head::OutOfWork => return StepResult::WorkLimit,
             }
             self.stats.node_pairs += 1;
             let node = &self.mesh.nodes[i as usize];
@@ -233,7 +215,6 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
                 );
                 continue;
             }
-            let _ = at;
             for child in [node.left, node.right] {
                 let slot = self.ws.placed.len() as u32;
                 self.ws.placed.push(pa.place(self.mesh, child));
@@ -244,47 +225,27 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
                 } else {
                     best
                 };
-                let step = match self.node_step(
-                    &pa,
-                    &side,
-                    (child, q),
-                    (kind, params.one_sided, near_within, clear),
-                    best_step,
-                ) {
-                    NodeStep::Near(_) if limited => NodeStep::Apart {
-                        step: T::ZERO,
-                        far: false,
-                    },
-                    other => other,
-                };
-                match (step, found.touching) {
-                    (NodeStep::Near(g), Some(touch)) if g < touch.distance => {
-                        self.ws.enqueue(Pending::new(step, (child, 0), (slot, 0)));
-                    }
-                    (_, Some(_)) => self.stats.pruned += 1,
-                    (NodeStep::Apart { step, .. }, None) if step >= best => self.stats.pruned += 1,
-                    (s, None) => self.ws.enqueue(Pending::new(s, (child, 0), (slot, 0))),
+                let step = self
+                    .node_step(
+                        &pa,
+                        &side,
+                        (child, q),
+                        (kind, params.one_sided, near_within, clear),
+                        best_step,
+                    )
+                    .resolved(limited);
+                if found.queues(step, best) {
+                    self.ws.enqueue(Pending::new(step, (child, 0), (slot, 0)));
+                } else {
+                    self.stats.pruned += 1;
                 }
             }
         }
-        if let Some(witness) = found.touching {
-            return StepResult::Touching {
-                witness,
-                normal: found.touching_normal,
-            };
-        }
-        if limited && best <= T::ZERO {
-            return StepResult::PrecisionLimit { resolution };
-        }
-        StepResult::Advance {
-            step: best,
-            witness: found.closest,
-            normal: found.normal,
-        }
+        found.verdict(best, limited, resolution)
     }
 
     fn work(&self) -> Work {
-        Work::new(self.stats.node_pairs, self.stats.triangle_pairs)
+        self.stats.work()
     }
 }
 
@@ -415,19 +376,9 @@ impl<T: Float> MeshConvexPair<'_, T> {
             Point3::from_vec3(on_a),
             Point3::from_vec3(on_b),
         );
-        if found.closest.is_none_or(|b| w.distance < b.distance) {
-            found.closest = Some(w);
-        }
-        let (Ok(n), true) = (dir, distance > cd) else {
-            if found.touching.is_none_or(|b| w.distance < b.distance) {
-                found.touching = Some(w);
-                found.touching_normal = dir.ok();
-            }
+        let Some(n) = found.keep(w, None, dir.ok(), distance > cd) else {
             return;
         };
-        if found.touching.is_some() {
-            return;
-        }
         let nv = n.get();
         let upper = corners[0]
             .dot(nv)
@@ -446,9 +397,6 @@ impl<T: Float> MeshConvexPair<'_, T> {
             pa.leaf_speed(leaf, n, kind)
         };
         let step = step_down(g, clearance, mu_a, side.rate(n, kind, one_sided));
-        if step < *best {
-            *best = step;
-            found.normal = Some(n);
-        }
+        found.fold(step, n, best);
     }
 }

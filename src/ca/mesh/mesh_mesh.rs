@@ -1,11 +1,13 @@
 //! Conservative advancement of two triangle meshes through their ball trees.
 
-use super::queue::{NodeStep, Pending, Queued};
+use super::found::{Found, Head, NodeStep};
+use super::placed::{slab_gap, Placed, Rates};
+use super::queue::{MeshWorkspace, Pending, Queued};
 use super::seeds::Seeds;
-use super::traversal::{slab_gap, Placed, Rates};
-use super::{MeshWorkspace, TraversalStats};
-use crate::bvh::{BallTree, Hierarchy};
-use crate::ca::{CaError, CaParams, CaStep, MeshParams, StepResult, Witness, WitnessSearch, Work};
+use super::stats::TraversalStats;
+use super::traversal::Descent;
+use crate::bvh::BallTree;
+use crate::ca::{CaError, CaParams, CaStep, MeshParams, StepResult, WitnessSearch, Work};
 use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down};
 use crate::{Direction, Float, PreparedMotion};
 
@@ -34,20 +36,14 @@ use crate::{Direction, Float, PreparedMotion};
 /// knots). Any seeds are sound, so a pair may be reused across queries.
 #[derive(Debug)]
 pub struct MeshPair<'a, T> {
-    /// The hierarchies descended (`BallTree::against`).
-    pub(super) a: &'a Hierarchy<T>,
-    pub(super) b: &'a Hierarchy<T>,
+    /// The hierarchies descended, with the work counters and the seeds.
+    descent: Descent<'a, T>,
     /// Whether A's and B's hierarchies are those of pieces.
-    pub(super) pieces: (bool, bool),
+    pieces: (bool, bool),
     /// The queue and the placed nodes: scratch space, reusable.
-    pub(super) ws: MeshWorkspace<T>,
-    pub(super) stats: TraversalStats,
-    pub(super) accept: T,
-    pub(super) far_ratio: T,
-    pub(super) closest: Option<(u32, u32)>,
-    /// The leaf pairs with the least steps found by the last step, measured
-    /// first by the next one.
-    pub(super) seeds: Seeds,
+    ws: MeshWorkspace<T>,
+    accept: T,
+    closest: Option<(u32, u32)>,
 }
 
 impl<'a, T: Float> MeshPair<'a, T> {
@@ -56,15 +52,17 @@ impl<'a, T: Float> MeshPair<'a, T> {
     pub fn new(a: &'a BallTree<T>, b: &'a BallTree<T>) -> Self {
         let (ha, hb) = (a.against(b), b.against(a));
         Self {
-            a: ha,
-            b: hb,
+            descent: Descent {
+                a: ha,
+                b: hb,
+                far_ratio: MeshParams::<T>::default().far_ratio,
+                stats: TraversalStats::default(),
+                seeds: Seeds::default(),
+            },
             pieces: (!core::ptr::eq(ha, &a.whole), !core::ptr::eq(hb, &b.whole)),
             ws: MeshWorkspace::new(),
-            stats: TraversalStats::default(),
             accept: MeshParams::<T>::default().accept_fraction,
-            far_ratio: MeshParams::<T>::default().far_ratio,
             closest: None,
-            seeds: Seeds::default(),
         }
     }
 
@@ -117,7 +115,7 @@ impl<'a, T: Float> MeshPair<'a, T> {
     pub fn try_with_params(mut self, params: MeshParams<T>) -> Result<Self, CaError> {
         params.validate()?;
         self.accept = params.accept_fraction;
-        self.far_ratio = params.far_ratio;
+        self.descent.far_ratio = params.far_ratio;
         Ok(self)
     }
 
@@ -150,16 +148,19 @@ impl<'a, T: Float> MeshPair<'a, T> {
     /// The work done since the pair was made or last reset.
     #[must_use]
     pub const fn stats(&self) -> TraversalStats {
-        self.stats
+        self.descent.stats
     }
 
     /// Resets the work counters.
     pub fn reset_stats(&mut self) {
-        self.stats = TraversalStats::default();
+        self.descent.stats = TraversalStats::default();
     }
 }
 
 impl<T: Float> CaStep<T> for MeshPair<'_, T> {
+    // One step at time `t`, in stages: the bodies placed (`Frame::new`),
+    // the seeds measured (`measure_seeds`), the descent of both hierarchies
+    // (`descend`), and the verdict from what they found (`Found::verdict`).
     fn step(
         &mut self,
         t: T,
@@ -167,69 +168,140 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         b: &PreparedMotion<T>,
         params: &CaParams<T>,
     ) -> StepResult<T> {
-        let (pa, pb) = (Placed::new(self.a, a, t), Placed::new(self.b, b, t));
-        let rates = Rates {
-            kind: params.bound.cheap_kind(),
-            one_sided: params.one_sided,
-        };
+        let frame = Frame::new(&self.descent, t, (a, b), params);
+        // Bodies so small that their squared lengths underflow: their balls
+        // and bounds are the underflow allowances' (section "Resolution").
+        let least = least_resolved_reach::<T>();
+        if self.descent.a.reach < least || self.descent.b.reach < least {
+            return StepResult::PrecisionLimit {
+                resolution: frame.resolution.max_nan(least),
+            };
+        }
         // Every pair whose step reaches the end of the bounds' interval is
         // pruned against a best step that is at least the exact rest of it,
         // so a descent that finds nothing shorter returns a step the driver
         // reads as reaching the end (section "Exact sums").
         let mut best = diff_up(b.motion().interval().end(), t);
-        let (cd, clear) = (params.contact_distance, params.clearance());
-        // Below the resolution a pair within the contact distance cannot be
-        // told from one within its clearance: no near pair is split to look
-        // for a contact (it would split every pair within the resolution,
-        // down to every triangle pair), and a zero step ends the query
-        // (`proofs/09-ca-toi.md`, Lemma 9.6).
-        let resolution = resolution_up(pa.err, pb.err, pa.reach + pb.reach);
-        let limited = resolution >= clear || resolution.is_nan();
-        // Bodies so small that their squared lengths underflow: their balls
-        // and bounds are the underflow allowances' (section "Resolution").
-        let least = least_resolved_reach::<T>();
-        if self.a.reach < least || self.b.reach < least {
-            return StepResult::PrecisionLimit {
-                resolution: resolution.max_nan(least),
-            };
-        }
         let mut found = Found::default();
-        let first_only = params.witness == WitnessSearch::First;
-        let start = self.stats;
-        let budget = params.work_budget;
-        // The previous step's leaf pairs with the least steps are measured
-        // first (Lemma 9.4): each one's own step is safe for that pair, and,
-        // usually close to the final step, it lets the descent prune children
-        // as they are made.
         self.closest = None;
-        let seed = core::mem::take(&mut self.seeds);
-        for &(i, j) in &seed.pairs[..seed.len] {
-            if self.out_of_work(start, budget) {
+        let seeds = self.measure_seeds(&frame, &mut best, &mut found);
+        if !self.descend(&frame, &seeds, &mut best, &mut found) {
+            return StepResult::WorkLimit;
+        }
+        self.closest = found.witness_triangles();
+        found.verdict(best, frame.limited, frame.resolution)
+    }
+
+    fn work(&self) -> Work {
+        self.descent.stats.work()
+    }
+}
+
+/// What a step of a [`MeshPair`] fixes before it measures anything.
+struct Frame<'p, T> {
+    /// Both bodies placed at the step's time.
+    pa: Placed<'p, T>,
+    pb: Placed<'p, T>,
+    /// How a pair's closing speed is bounded.
+    rates: Rates,
+    /// The contact distance and the clearance.
+    cd: T,
+    clear: T,
+    /// The resolution of the placements, and whether the clearance is
+    /// below it: then a pair within the contact distance cannot be told
+    /// from one within its clearance, so no near pair is split to look for
+    /// a contact (it would split every pair within the resolution, down to
+    /// every triangle pair), and a zero step ends the query
+    /// (`proofs/09-ca-toi.md`, Lemma 9.6).
+    resolution: T,
+    limited: bool,
+    /// Only the first contact is wanted, not the closest pair.
+    first_only: bool,
+    /// The work counters at the step's start, and the step's budget.
+    start: TraversalStats,
+    budget: Work,
+}
+
+impl<'p, T: Float> Frame<'p, T> {
+    /// The frame of a step at time `t` of `descent`'s hierarchies moving by
+    /// `a` and `b`.
+    #[inline]
+    fn new(
+        descent: &Descent<'_, T>,
+        t: T,
+        (a, b): (&'p PreparedMotion<T>, &'p PreparedMotion<T>),
+        params: &CaParams<T>,
+    ) -> Self {
+        let (pa, pb) = (Placed::new(descent.a, a, t), Placed::new(descent.b, b, t));
+        let clear = params.clearance();
+        let resolution = resolution_up(pa.err, pb.err, pa.reach + pb.reach);
+        Self {
+            rates: Rates {
+                kind: params.bound.cheap_kind(),
+                one_sided: params.one_sided,
+            },
+            cd: params.contact_distance,
+            clear,
+            resolution,
+            limited: resolution >= clear || resolution.is_nan(),
+            first_only: params.witness == WitnessSearch::First,
+            start: descent.stats,
+            budget: params.work_budget,
+            pa,
+            pb,
+        }
+    }
+}
+
+impl<T: Float> MeshPair<'_, T> {
+    /// Measures the leaf pairs the last step handed over (Lemma 9.4), at
+    /// the new time, before the descent: each one's own step is safe for
+    /// that pair and, usually close to the final step, lets the descent
+    /// prune children as they are made. Returns them, for the descent to
+    /// skip.
+    #[inline]
+    fn measure_seeds(&mut self, f: &Frame<'_, T>, best: &mut T, found: &mut Found<T>) -> Seeds {
+        let seeds = core::mem::take(&mut self.descent.seeds);
+        for &(i, j) in &seeds.pairs[..seeds.len] {
+            if self.descent.stats.out_of_work(&f.start, f.budget) {
                 break;
             }
             let (i, j) = (i as usize, j as usize);
-            let corners = (pa.corners(&self.a.leaves[i]), pb.corners(&self.b.leaves[j]));
-            self.triangle_pair(
-                (&pa, &pb),
+            let corners = (
+                f.pa.corners(&self.descent.a.leaves[i]),
+                f.pb.corners(&self.descent.b.leaves[j]),
+            );
+            self.descent.triangle_pair(
+                (&f.pa, &f.pb),
                 (i, j),
                 (&corners.0, &corners.1),
-                (rates, cd, clear),
-                (&mut best, &mut found),
+                (f.rates, f.cd, f.clear),
+                (best, found),
             );
         }
+        seeds
+    }
+
+    /// The best-first descent of both hierarchies from their roots: node
+    /// pairs popped from the queue until it is empty or [`Found::head`]
+    /// stops the step; a pair far apart for its size settled with its own
+    /// step, a leaf pair measured ([`leaf_pair`](Self::leaf_pair)), any
+    /// other pair split ([`expand`](Self::expand)). `false` when the work
+    /// budget ran out before any contact was found: the step is undecided.
+    #[inline]
+    fn descend(
+        &mut self,
+        f: &Frame<'_, T>,
+        seeds: &Seeds,
+        best: &mut T,
+        found: &mut Found<T>,
+    ) -> bool {
         self.ws.clear();
         let roots = (
-            self.ws.placed_slot(0, 0, || pa.place(self.a, 0)),
-            self.ws.placed_slot(1, 0, || pb.place(self.b, 0)),
+            self.ws.placed_slot(0, 0, || f.pa.place(self.descent.a, 0)),
+            self.ws.placed_slot(1, 0, || f.pb.place(self.descent.b, 0)),
         );
-        let root = if limited {
-            NodeStep::Apart {
-                step: T::ZERO,
-                far: false,
-            }
-        } else {
-            NodeStep::Near(-T::INFINITY)
-        };
+        let root = NodeStep::Near(-T::INFINITY).resolved(f.limited);
         self.ws.enqueue(Pending::new(root, (0, 0), roots));
         while let Some(Queued { slot, .. }) = self.ws.pop() {
             let Pending {
@@ -241,194 +313,158 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 at,
             } = self.ws.pending[slot as usize];
             let key = T::from_f64(key.0);
-            if let Some(touch) = found.touching {
-                // A contact is found: the rest is a branch and bound for the
-                // closest pair. Near pairs come first, least certified gap
-                // (a lower bound of their distance) first; every other pair
-                // is farther than the contact distance.
-                if first_only || !near || key >= touch.distance {
+            let out_of_work = self.descent.stats.out_of_work(&f.start, f.budget);
+            match found.head((near, key), (*best, self.accept), f.first_only, out_of_work) {
+                Head::Go => {}
+                Head::Stop => break,
+                Head::Cut => {
+                    self.descent.stats.pruned += self.ws.len() as u64 + 1;
+                    *best = best.min_nan(key);
                     break;
                 }
-            } else if !near && key >= best * self.accept {
-                // Best-first: every pair left has a step at least `key`, so
-                // `min(best, key)` is safe for the whole meshes.
-                self.stats.pruned += self.ws.len() as u64 + 1;
-                best = best.min_nan(key);
-                break;
+                Head::OutOfWork => return false,
             }
-            if self.out_of_work(start, budget) {
-                // Out of work: a contact already found stands (its witness
-                // the closest pair so far); anything else is undecided.
-                if found.touching.is_some() {
-                    break;
-                }
-                return StepResult::WorkLimit;
-            }
-            self.stats.node_pairs += 1;
+            self.descent.stats.node_pairs += 1;
             if far {
                 // Splitting a pair this far apart for its size would gain
                 // little: its own step is safe for everything below it.
-                self.stats.settled += 1;
-                best = best.min_nan(key);
+                self.descent.stats.settled += 1;
+                *best = best.min_nan(key);
                 continue;
             }
-            let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
-            let (leaf_a, leaf_b) = (na.leaf(), nb.leaf());
-            if let (Some(li), Some(lj)) = (leaf_a, leaf_b) {
-                if seed.contains((li as u32, lj as u32)) {
-                    // Measured before the descent: its step is in `best`.
-                    continue;
+            let (na, nb) = (
+                &self.descent.a.nodes[i as usize],
+                &self.descent.b.nodes[j as usize],
+            );
+            match (na.leaf(), nb.leaf()) {
+                (Some(li), Some(lj)) => self.leaf_pair(f, ((li, lj), at), seeds, best, found),
+                (leaf_a, leaf_b) => {
+                    // Descend into the larger ball (a leaf is never split).
+                    let split_a = leaf_b.is_some()
+                        || (leaf_a.is_none() && na.ball.radius() >= nb.ball.radius());
+                    let children = if split_a {
+                        [na.left, na.right]
+                    } else {
+                        [nb.left, nb.right]
+                    };
+                    self.expand(f, ((i, j), at), (split_a, children), *best, found);
                 }
-                let (la, lb) = (&self.a.leaves[li], &self.b.leaves[lj]);
-                let (ta, tb) = (pa.corners(la), pb.corners(lb));
-                // Cheap first: the corners' slab along the line joining the
-                // ball centres (Lemma 9.1 holds for any direction).
-                let (qa, qb) = (self.ws.placed[at.0 as usize], self.ws.placed[at.1 as usize]);
-                if let Ok(n) = Direction::try_new(qb.centre - qa.centre) {
-                    let g = gap_down(
-                        slab_gap(&ta, &tb, n.get()),
-                        pa.leaf_err(la),
-                        pb.leaf_err(lb),
-                        pa.reach + pb.reach,
-                    );
-                    if let Some(touch) = found.touching {
-                        // The slab's gap is a lower bound of the distance.
-                        if g >= touch.distance {
-                            self.stats.pruned += 1;
-                            continue;
-                        }
-                    } else if g > cd {
-                        // A pair certainly farther apart than the contact
-                        // distance is pruned when its step reaches the best.
-                        self.stats.bounds += 2;
-                        let (mu_a, mu_b) = rates.leaves(&pa, &pb, (la, lb), n);
-                        if step_down(g, clear, mu_a, mu_b) >= best {
-                            self.stats.pruned += 1;
-                            continue;
-                        }
-                    }
-                }
-                self.triangle_pair(
-                    (&pa, &pb),
-                    (li, lj),
-                    (&ta, &tb),
-                    (rates, cd, clear),
-                    (&mut best, &mut found),
-                );
-                continue;
             }
-            // Descend into the larger ball (a leaf is never split).
-            let split_a =
-                leaf_b.is_some() || (leaf_a.is_none() && na.ball.radius() >= nb.ball.radius());
-            let (left, right) = if split_a {
-                (na.left, na.right)
+        }
+        true
+    }
+
+    /// A leaf pair popped from the queue (leaves `li` of A and `lj` of B,
+    /// their nodes placed at `at`): skipped when it is a seed (measured
+    /// before the descent: its step is in `best`), pruned when the slab of
+    /// its corners along the line joining the ball centres (Lemma 9.1 holds
+    /// for any direction) shows it no closer than the contact found or,
+    /// before a contact, farther apart than the contact distance with a step
+    /// that reaches `best`; else measured.
+    #[inline]
+    fn leaf_pair(
+        &mut self,
+        f: &Frame<'_, T>,
+        ((li, lj), at): ((usize, usize), (u32, u32)),
+        seeds: &Seeds,
+        best: &mut T,
+        found: &mut Found<T>,
+    ) {
+        if seeds.contains((li as u32, lj as u32)) {
+            return;
+        }
+        let d = &mut self.descent;
+        let (la, lb) = (&d.a.leaves[li], &d.b.leaves[lj]);
+        let (ta, tb) = (f.pa.corners(la), f.pb.corners(lb));
+        let (qa, qb) = (self.ws.placed[at.0 as usize], self.ws.placed[at.1 as usize]);
+        if let Ok(n) = Direction::try_new(qb.centre - qa.centre) {
+            let g = gap_down(
+                slab_gap(&ta, &tb, n.get()),
+                f.pa.leaf_err(la),
+                f.pb.leaf_err(lb),
+                f.pa.reach + f.pb.reach,
+            );
+            if let Some(touch) = found.touching {
+                // The slab's gap is a lower bound of the distance.
+                if g >= touch.distance {
+                    d.stats.pruned += 1;
+                    return;
+                }
+            } else if g > f.cd {
+                // A pair certainly farther apart than the contact distance
+                // is pruned when its step reaches the best.
+                d.stats.bounds += 2;
+                let (mu_a, mu_b) = f.rates.leaves(&f.pa, &f.pb, (la, lb), n);
+                if step_down(g, f.clear, mu_a, mu_b) >= *best {
+                    d.stats.pruned += 1;
+                    return;
+                }
+            }
+        }
+        d.triangle_pair(
+            (&f.pa, &f.pb),
+            (li, lj),
+            (&ta, &tb),
+            (f.rates, f.cd, f.clear),
+            (best, found),
+        );
+    }
+
+    /// Splits a node pair (nodes `i` of A and `j` of B, placed at `at`)
+    /// into the pairs of `children` (of A's node when `split_a`, else of
+    /// B's) with the other node, placing each new node once per step (the
+    /// kept one is placed), and queues each child pair whose own step
+    /// ([`Descent::node_step`]) does not prune it ([`Found::queues`]).
+    #[inline]
+    fn expand(
+        &mut self,
+        f: &Frame<'_, T>,
+        ((i, j), at): ((u32, u32), (u32, u32)),
+        (split_a, children): (bool, [u32; 2]),
+        best: T,
+        found: &Found<T>,
+    ) {
+        for child in children {
+            let (pair, at) = if split_a {
+                let slot = self
+                    .ws
+                    .placed_slot(0, child, || f.pa.place(self.descent.a, child));
+                ((child, j), (slot, at.1))
             } else {
-                (nb.left, nb.right)
+                let slot = self
+                    .ws
+                    .placed_slot(1, child, || f.pb.place(self.descent.b, child));
+                ((i, child), (at.0, slot))
             };
-            for child in [left, right] {
-                // Place the new node once per step; the kept one is placed.
-                let (pair, at) = if split_a {
-                    let slot = self.ws.placed_slot(0, child, || pa.place(self.a, child));
-                    ((child, j), (slot, at.1))
-                } else {
-                    let slot = self.ws.placed_slot(1, child, || pb.place(self.b, child));
-                    ((i, child), (at.0, slot))
-                };
-                let q = (self.ws.placed[at.0 as usize], self.ws.placed[at.1 as usize]);
-                // In the search for the closest pair only gaps matter: a
-                // best step of zero skips the directed bounds.
-                // The closest pair's direction separates the volumes near
-                // it best.
-                let (best_step, also) = if found.touching.is_some() {
-                    (T::ZERO, found.touching_normal)
-                } else {
-                    (best, None)
-                };
-                // Below the resolution no pair is near: one within the
-                // clearance (or unseparated) is a zero step.
-                let near_within = if limited { -T::INFINITY } else { cd };
-                let step = match self.node_step(
-                    &pa,
-                    &pb,
+            let q = (self.ws.placed[at.0 as usize], self.ws.placed[at.1 as usize]);
+            // In the search for the closest pair only gaps matter: a
+            // best step of zero skips the directed bounds.
+            // The closest pair's direction separates the volumes near
+            // it best.
+            let (best_step, also) = if found.touching.is_some() {
+                (T::ZERO, found.touching_normal)
+            } else {
+                (best, None)
+            };
+            // Below the resolution no pair is near: one within the
+            // clearance (or unseparated) is a zero step.
+            let near_within = if f.limited { -T::INFINITY } else { f.cd };
+            let step = self
+                .descent
+                .node_step(
+                    &f.pa,
+                    &f.pb,
                     pair,
                     q,
-                    (rates, near_within, clear),
+                    (f.rates, near_within, f.clear),
                     (best_step, also),
-                ) {
-                    NodeStep::Near(_) if limited => NodeStep::Apart {
-                        step: T::ZERO,
-                        far: false,
-                    },
-                    other => other,
-                };
-                match (step, found.touching) {
-                    (NodeStep::Near(g), Some(touch)) if g < touch.distance => {
-                        self.ws.enqueue(Pending::new(step, pair, at));
-                    }
-                    (_, Some(_)) => self.stats.pruned += 1,
-                    (NodeStep::Apart { step, .. }, None) if step >= best => self.stats.pruned += 1,
-                    (found, None) => self.ws.enqueue(Pending::new(found, pair, at)),
-                }
+                )
+                .resolved(f.limited);
+            if found.queues(step, best) {
+                self.ws.enqueue(Pending::new(step, pair, at));
+            } else {
+                self.descent.stats.pruned += 1;
             }
-        }
-        if let Some(witness) = found.touching {
-            self.closest = found.touching_triangles;
-            return StepResult::Touching {
-                witness,
-                normal: found.touching_normal,
-            };
-        }
-        self.closest = found.closest_triangles;
-        if limited && best <= T::ZERO {
-            return StepResult::PrecisionLimit { resolution };
-        }
-        StepResult::Advance {
-            step: best,
-            witness: found.closest,
-            normal: found.normal,
-        }
-    }
-
-    fn work(&self) -> Work {
-        Work::new(self.stats.node_pairs, self.stats.triangle_pairs)
-    }
-}
-
-impl<T: Float> MeshPair<'_, T> {
-    /// Whether the work since the counters read `start` has used up either
-    /// count of `budget`: checked before every node pair (which measures at
-    /// most one triangle pair), so a step never does more than its budget.
-    #[inline]
-    fn out_of_work(&self, start: TraversalStats, budget: Work) -> bool {
-        self.stats.node_pairs - start.node_pairs >= budget.node_pairs
-            || self.stats.triangle_pairs - start.triangle_pairs >= budget.triangle_pairs
-    }
-}
-
-/// What one step's measured triangle pairs found.
-#[derive(Clone, Copy, Debug)]
-pub(super) struct Found<T> {
-    /// The closest pair measured, and its triangles.
-    pub(super) closest: Option<Witness<T>>,
-    pub(super) closest_triangles: Option<(u32, u32)>,
-    /// The direction of the pair with the least step.
-    pub(super) normal: Option<Direction<T>>,
-    /// The closest pair within the contact distance, if any: its witness,
-    /// triangles and direction.
-    pub(super) touching: Option<Witness<T>>,
-    pub(super) touching_triangles: Option<(u32, u32)>,
-    pub(super) touching_normal: Option<Direction<T>>,
-}
-
-impl<T> Default for Found<T> {
-    fn default() -> Self {
-        Self {
-            closest: None,
-            closest_triangles: None,
-            normal: None,
-            touching: None,
-            touching_triangles: None,
-            touching_normal: None,
         }
     }
 }

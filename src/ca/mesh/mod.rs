@@ -1,15 +1,21 @@
 //! Conservative advancement of triangle meshes through their ball trees.
 //!
 //! The steppers, each in the file of the pair it serves: two meshes
-//! ([`MeshPair`], `mesh_mesh`), a mesh against a convex shape or a
-//! half-space ([`MeshConvexPair`], `mesh_convex`). What they share, each in
-//! its own file: the descent of one step (`traversal`), the best-first queue
-//! and the reusable scratch space ([`MeshWorkspace`], `queue`), the leaf
-//! pairs handed from step to step (`seeds`) and the work counters
-//! ([`TraversalStats`], `stats`).
+//! ([`MeshPair`], `mesh_mesh`: its step in stages), a mesh against a convex
+//! shape or a half-space ([`MeshConvexPair`], `mesh_convex`). What they
+//! share, each in its own file, bottom first (a file imports only from the
+//! files listed before it): the work counters ([`TraversalStats`], `stats`),
+//! the leaf pairs handed from step to step (`seeds`), the bodies and nodes
+//! placed at the step's time with their closing rates (`placed`), what a
+//! step finds and the rules both steppers decide by (`found`), the
+//! best-first queue and the reusable scratch space ([`MeshWorkspace`],
+//! `queue`), and the measurements of the descent of two meshes
+//! (`traversal`).
 
+mod found;
 mod mesh_convex;
 mod mesh_mesh;
+mod placed;
 mod queue;
 mod seeds;
 mod stats;

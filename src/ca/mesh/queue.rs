@@ -4,7 +4,8 @@
 use alloc::collections::BinaryHeap;
 use alloc::vec::Vec;
 
-use super::traversal::PlacedNode;
+use super::found::NodeStep;
+use super::placed::PlacedNode;
 use crate::Float;
 
 /// The scratch space of a [`MeshPair`](super::MeshPair): its best-first
@@ -159,17 +160,6 @@ impl<T: Float> Default for MeshWorkspace<T> {
 /// The entries per body of the placement cache.
 const SEEN: usize = 512;
 
-/// What `MeshPair::node_step` found for a node pair.
-#[derive(Clone, Copy, Debug)]
-pub(super) enum NodeStep<T> {
-    /// Certified apart by more than the contact distance, with its safe step;
-    /// `far`: far apart for its size (its step is taken as it is).
-    Apart { step: T, far: bool },
-    /// Its certified gap (`-inf` when no direction separates the volumes) is
-    /// at most the contact distance: it must be split.
-    Near(T),
-}
-
 /// An entry of the best-first queue: a node pair's key and where the pair is
 /// in the workspace's `pending` (kept small: the queue moves its entries). Pairs
 /// near enough for contact come first, least gap first; then the others,
@@ -242,8 +232,8 @@ pub(super) struct OrdF64(pub(super) f64);
 
 #[cfg(test)]
 mod tests {
+    use super::super::placed::PlacedNode;
     use super::{MeshWorkspace, NodeStep, Pending, Queued};
-    use crate::ca::mesh::traversal::PlacedNode;
     use crate::Vec3;
     use alloc::collections::BinaryHeap;
     use alloc::vec::Vec;

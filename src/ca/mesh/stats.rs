@@ -1,5 +1,7 @@
 //! The work counters of a mesh query.
 
+use crate::ca::Work;
+
 /// Work counters of a [`MeshPair`](super::MeshPair), summed over every step since the last
 /// [`MeshPair::reset_stats`](super::MeshPair::reset_stats): what a profile of the query needs.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -27,4 +29,21 @@ pub struct TraversalStats {
     /// Child node pairs whose volumes no tested direction separates (a zero
     /// safe step): they can only be split.
     pub overlapping: u64,
+}
+
+impl TraversalStats {
+    /// Whether the work since the counters read `start` has used up either
+    /// count of `budget`: checked before every node pair (which measures at
+    /// most one triangle pair), so a step never does more than its budget.
+    #[inline]
+    pub(super) fn out_of_work(&self, start: &Self, budget: Work) -> bool {
+        self.node_pairs - start.node_pairs >= budget.node_pairs
+            || self.triangle_pairs - start.triangle_pairs >= budget.triangle_pairs
+    }
+
+    /// The node pairs and triangle pairs counted, as the driver counts work.
+    #[inline]
+    pub(super) const fn work(&self) -> Work {
+        Work::new(self.node_pairs, self.triangle_pairs)
+    }
 }
