@@ -46,7 +46,7 @@ pub enum MeshError {
     Off(OffError),
     /// An OBJ file could not be read.
     #[cfg(feature = "obj")]
-    Obj(crate::mesh::obj::ObjError),
+    Obj(ObjError),
     /// Input to the STL reader that is neither ASCII STL (it does not begin
     /// with `solid`) nor a binary STL of the `84 + 50 n` bytes that the
     /// triangle count `n` in its header announces: a truncated file, or
@@ -200,5 +200,32 @@ impl core::error::Error for OffError {}
 impl From<OffError> for MeshError {
     fn from(e: OffError) -> Self {
         Self::Off(e)
+    }
+}
+
+#[cfg(feature = "obj")]
+/// Why tobj could not read an OBJ file: tobj's own error, kept opaque so that
+/// tobj's version is not part of this crate's API ([`source`] gives it).
+///
+/// [`source`]: core::error::Error::source
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ObjError(pub(super) tobj::LoadError);
+
+// tobj's `LoadError` is a field-less enum whose `PartialEq` is the derived,
+// reflexive one, so equality is an equivalence.
+#[cfg(feature = "obj")]
+impl Eq for ObjError {}
+
+#[cfg(feature = "obj")]
+impl fmt::Display for ObjError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "OBJ: {}", self.0)
+    }
+}
+
+#[cfg(feature = "obj")]
+impl core::error::Error for ObjError {
+    fn source(&self) -> Option<&(dyn core::error::Error + 'static)> {
+        Some(&self.0)
     }
 }

@@ -10,8 +10,8 @@ mod stl;
 mod topology;
 mod trimesh;
 
-pub use error::{MeshError, OffError, OffErrorKind};
 #[cfg(feature = "obj")]
-pub use obj::ObjError;
+pub use error::ObjError;
+pub use error::{MeshError, OffError, OffErrorKind};
 pub use topology::EdgeReport;
 pub use trimesh::TriMesh;

@@ -13,35 +13,11 @@
 //! Read OFF ([`TriMesh::from_off_str`]) when every bit matters.
 
 use alloc::vec::Vec;
-use core::fmt;
 use std::io::BufRead;
 use std::path::Path;
 
-use crate::mesh::MeshError;
+use super::error::{MeshError, ObjError};
 use crate::{Float, TriMesh};
-
-/// Why tobj could not read an OBJ file: tobj's own error, kept opaque so that
-/// tobj's version is not part of this crate's API ([`source`] gives it).
-///
-/// [`source`]: core::error::Error::source
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ObjError(tobj::LoadError);
-
-// tobj's `LoadError` is a field-less enum whose `PartialEq` is the derived,
-// reflexive one, so equality is an equivalence.
-impl Eq for ObjError {}
-
-impl fmt::Display for ObjError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "OBJ: {}", self.0)
-    }
-}
-
-impl core::error::Error for ObjError {
-    fn source(&self) -> Option<&(dyn core::error::Error + 'static)> {
-        Some(&self.0)
-    }
-}
 
 #[allow(
     clippy::needless_update,
