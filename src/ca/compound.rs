@@ -1,10 +1,23 @@
 //! Conservative advancement of a compound against any shape: the pairs of
 //! its parts, each by its own stepper.
 
-use crate::ca::{
-    AnyPair, CaError, CaParams, CaStep, MeshWorkspace, Shape, StepResult, Witness, Work,
-};
+use core::marker::PhantomData;
+
+use crate::ca::{CaError, CaParams, CaStep, MeshWorkspace, Shape, StepResult, Witness, Work};
 use crate::{Direction, Float, PreparedMotion, RigidMotion};
+
+/// The stepper of one pair of parts: what a compound pair needs of the
+/// dispatch ([`AnyPair`](crate::ca::AnyPair) is it). A compound pair is
+/// generic over it so that this file needs nothing of the dispatch, which
+/// in turn takes compounds here (no import cycle).
+pub(crate) trait PartPair<'a, T: Float>: CaStep<T> + Sized {
+    /// The stepper of parts `a` and `b`.
+    fn try_new(a: Shape<'a, T>, b: Shape<'a, T>) -> Result<Self, CaError>;
+    /// With the scratch space `ws`.
+    fn with_workspace(self, ws: MeshWorkspace<T>) -> Self;
+    /// The scratch space.
+    fn into_workspace(self) -> MeshWorkspace<T>;
+}
 
 /// A step with its witness and normal.
 type Advance<T> = (T, Option<Witness<T>>, Option<Direction<T>>);
@@ -14,14 +27,16 @@ type Advance<T> = (T, Option<Witness<T>>, Option<Direction<T>>);
 /// share one mesh workspace), the least step over them (Lemma 9.2: the
 /// part pairs cover every point pair), the closest contact among them.
 #[derive(Debug)]
-pub(crate) struct CompoundPair<'a, T> {
+pub(crate) struct CompoundPair<'a, T, P> {
     a: Shape<'a, T>,
     b: Shape<'a, T>,
     ws: MeshWorkspace<T>,
     work: Work,
+    /// The stepper of its part pairs, made at each step.
+    parts: PhantomData<fn() -> P>,
 }
 
-impl<'a, T: Float> CompoundPair<'a, T> {
+impl<'a, T: Float, P> CompoundPair<'a, T, P> {
     /// The pair of `a` and `b`, either or both compounds.
     pub(crate) fn new(a: Shape<'a, T>, b: Shape<'a, T>) -> Self {
         Self {
@@ -29,6 +44,7 @@ impl<'a, T: Float> CompoundPair<'a, T> {
             b,
             ws: MeshWorkspace::new(),
             work: Work::ZERO,
+            parts: PhantomData,
         }
     }
 
@@ -43,7 +59,7 @@ impl<'a, T: Float> CompoundPair<'a, T> {
     }
 }
 
-impl<T: Float> CaStep<T> for CompoundPair<'_, T> {
+impl<'a, T: Float, P: PartPair<'a, T>> CaStep<T> for CompoundPair<'a, T, P> {
     fn step(
         &mut self,
         t: T,
@@ -57,7 +73,7 @@ impl<T: Float> CaStep<T> for CompoundPair<'_, T> {
         let mut limit: Option<T> = None;
         for i in 0..self.a.part_count() {
             for j in 0..self.b.part_count() {
-                let Ok(pair) = AnyPair::try_new(self.a.part(i), self.b.part(j)) else {
+                let Ok(pair) = P::try_new(self.a.part(i), self.b.part(j)) else {
                     continue;
                 };
                 let mut pair = pair.with_workspace(core::mem::take(&mut self.ws));
@@ -117,7 +133,7 @@ impl<T: Float> CaStep<T> for CompoundPair<'_, T> {
     fn check_motions(&self, a: &RigidMotion<T>, b: &RigidMotion<T>) -> Result<(), CaError> {
         for i in 0..self.a.part_count() {
             for j in 0..self.b.part_count() {
-                AnyPair::try_new(self.a.part(i), self.b.part(j))?.check_motions(a, b)?;
+                P::try_new(self.a.part(i), self.b.part(j))?.check_motions(a, b)?;
             }
         }
         Ok(())

@@ -5,7 +5,7 @@
 //! [`AnyPair`]. A new stepper is one arm of [`AnyPair::try_new`]
 //! (`docs/architecture.md`).
 
-use crate::ca::compound::CompoundPair;
+use crate::ca::compound::{CompoundPair, PartPair};
 use crate::ca::{
     BallPair, CaError, CaParams, CaStep, ConvexPair, GjkProximity, HalfSpacePair, MeshConvexPair,
     MeshPair, MeshParams, MeshWorkspace, Shape, StepResult, VertexSetPair, Witness, Work,
@@ -64,7 +64,7 @@ enum Kinds<'a, T> {
     Balls(BallPair<T>),
     Convexes(ConvexPair<'a, T>),
     HalfSpace(HalfSpacePair<'a, T>),
-    Compound(CompoundPair<'a, T>),
+    Compound(CompoundPair<'a, T, AnyPair<'a, T>>),
 }
 
 /// A vertex set or a ball, met by another kind, as the convex shape it is;
@@ -203,6 +203,20 @@ impl<'a, T: Float> AnyPair<'a, T> {
             Kinds::HalfSpace(p) => p,
             Kinds::Compound(p) => p,
         }
+    }
+}
+
+impl<'a, T: Float> PartPair<'a, T> for AnyPair<'a, T> {
+    fn try_new(a: Shape<'a, T>, b: Shape<'a, T>) -> Result<Self, CaError> {
+        Self::try_new(a, b)
+    }
+
+    fn with_workspace(self, ws: MeshWorkspace<T>) -> Self {
+        self.with_workspace(ws)
+    }
+
+    fn into_workspace(self) -> MeshWorkspace<T> {
+        self.into_workspace()
     }
 }
 
