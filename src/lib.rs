@@ -207,6 +207,8 @@ mod math;
 #[cfg(feature = "alloc")]
 mod mesh;
 mod motion;
+#[cfg(feature = "reference")]
+mod rng;
 mod rounding;
 #[cfg(feature = "alloc")]
 #[cfg_attr(docsrs, doc(cfg(feature = "alloc")))]

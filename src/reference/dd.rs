@@ -720,10 +720,9 @@ mod tests {
 
     const U2: f64 = 1.232_595_164_407_831e-32; // 2^-106
 
-    /// The testkit's deterministic generator (SplitMix64), so failures
-    /// reproduce (the testkit is on in every test build: the crate's
-    /// self dev-dependency turns it on).
-    use crate::testkit::toi::Rng;
+    /// The test support's deterministic generator (SplitMix64), so failures
+    /// reproduce.
+    use crate::rng::SplitMix64 as Rng;
 
     /// A double-double with a random tail, in about `[a, b)`.
     fn random_dd(g: &mut Rng, a: f64, b: f64) -> DoubleDouble {

@@ -16,6 +16,7 @@ use std::vec::Vec;
 
 use crate::{Direction, Float, Point3, RigidMotion, TimeInterval, Vec3};
 
+pub use crate::rng::SplitMix64;
 pub use exact::triangles_intersect_exact;
 
 mod exact;
@@ -310,31 +311,6 @@ impl CaseSpec {
             motion,
             n,
         })
-    }
-}
-
-/// A deterministic generator for benchmarks and examples (SplitMix64).
-#[derive(Clone, Debug)]
-pub struct SplitMix64(pub u64);
-
-impl SplitMix64 {
-    /// The next 64 random bits.
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// Uniform in `[-1, 1)`.
-    pub fn signed_unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
-
-    /// A random vector with components in `[-1, 1)`.
-    pub fn vec3(&mut self) -> [f64; 3] {
-        [self.signed_unit(), self.signed_unit(), self.signed_unit()]
     }
 }
 

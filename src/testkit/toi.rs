@@ -5,7 +5,7 @@
 extern crate std;
 use std::vec::Vec;
 
-use super::SplitMix64;
+use crate::rng::SplitMix64;
 use crate::{Float, RigidMotion, TriMesh, Vec3};
 
 /// The deterministic random source of the time-of-impact generators: the
@@ -13,22 +13,6 @@ use crate::{Float, RigidMotion, TriMesh, Vec3};
 pub type Rng = SplitMix64;
 
 impl SplitMix64 {
-    /// A source seeded with `seed`.
-    #[must_use]
-    pub const fn new(seed: u64) -> Self {
-        Self(seed)
-    }
-
-    /// Uniform in `[0, 1)`.
-    pub fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    /// Uniform in `[lo, hi)`.
-    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
-    }
-
     /// A uniformly distributed unit vector (rejection from the cube).
     pub fn direction(&mut self) -> [f64; 3] {
         loop {
