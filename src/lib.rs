@@ -207,7 +207,7 @@ mod math;
 #[cfg(feature = "alloc")]
 mod mesh;
 mod motion;
-#[cfg(feature = "reference")]
+#[cfg(any(test, feature = "reference"))]
 mod rng;
 mod rounding;
 #[cfg(feature = "alloc")]
