@@ -207,7 +207,7 @@ mod math;
 #[cfg(feature = "alloc")]
 mod mesh;
 mod motion;
-#[cfg(any(test, feature = "reference"))]
+#[cfg(any(test, feature = "testkit"))]
 mod rng;
 mod rounding;
 #[cfg(feature = "alloc")]
