@@ -25,8 +25,8 @@
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use motion_bound::ca::{time_of_impact, CaOutcome, CaParams, CaReport, MeshPair, Work};
 use motion_bound::bodies::icosphere;
+use motion_bound::ca::{time_of_impact, CaOutcome, CaParams, CaReport, MeshPair, Work};
 use motion_bound::{BallTree, Float, Point3, RigidMotion, TimeInterval, Vec3};
 use motion_bound_fuzz::Bytes;
 
