@@ -621,3 +621,44 @@ fn bad_chain_input_is_a_typed_error() {
     }
     assert_eq!(b.build().err(), Some(ChainError::NotATree));
 }
+
+#[test]
+fn limits_are_typed_errors_and_segments_stay_within_them() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let urdf = |lower: &str| {
+        format!(
+            r#"<robot name="r"><link name="a"/><link name="b"/><joint name="j" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/><limit lower="{lower}" upper="1" effort="1" velocity="1"/></joint></robot>"#
+        )
+    };
+    let opts = UrdfOptions::default();
+    assert_eq!(
+        Chain::<f64>::from_urdf_str(&urdf("NaN"), dir, &opts).err(),
+        Some(ChainError::BadLimits("j".into())),
+        "a NaN limit"
+    );
+    let chain = Chain::<f64>::from_urdf_str(&urdf("-1"), dir, &opts).expect("a limited joint");
+    assert_eq!(chain.limits(), vec![Some([-1.0, 1.0])]);
+    let mut scene = ChainScene::new(chain);
+    for (q0, q1, beyond) in [
+        (-1.0, 1.0, false),
+        (0.0, 1.0 + 1e-12, true),
+        (-1.5, 0.0, true),
+        (0.5, 0.25, false),
+    ] {
+        let r = scene.check_segment(&[q0], &[q1]);
+        if beyond {
+            assert_eq!(r.err(), Some(ChainError::BeyondLimits(0)), "{q0} to {q1}");
+        } else {
+            assert!(r.is_ok(), "{q0} to {q1}: {r:?}");
+        }
+    }
+    assert_eq!(
+        scene.check_path(&[vec![0.0], vec![0.5], vec![2.0]]).err(),
+        Some(ChainError::BeyondLimits(0)),
+        "a waypoint beyond"
+    );
+    scene
+        .set_params(ChainParams::default().with_within_limits(false))
+        .expect("params");
+    assert!(scene.check_segment(&[0.0], &[2.0]).is_ok(), "the check off");
+}

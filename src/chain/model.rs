@@ -92,6 +92,10 @@ pub enum ChainError {
     },
     /// A joint coordinate is NaN, infinite or beyond the input range.
     NonFiniteCoordinate(usize),
+    /// A joint coordinate of a segment's end is outside its joint's limits
+    /// (checked unless [`ChainParams::within_limits`](crate::chain::ChainParams::within_limits)
+    /// is off).
+    BeyondLimits(usize),
     /// A link's mesh could not be made into a ball tree.
     Mesh(String),
     /// A query parameter is out of range.
@@ -120,6 +124,9 @@ impl fmt::Display for ChainError {
                     f,
                     "a joint-space vector of length {got} for a chain of {expected} coordinates"
                 )
+            }
+            Self::BeyondLimits(i) => {
+                write!(f, "coordinate {i} is outside its joint's limits")
             }
             Self::NonFiniteCoordinate(i) => {
                 write!(
@@ -529,6 +536,24 @@ impl<T: Float> Chain<T> {
     #[must_use]
     pub fn base(&self) -> Pose<T> {
         self.base
+    }
+
+    /// [`check_q`](Self::check_q), and each coordinate within its joint's
+    /// limits (inclusive).
+    pub(crate) fn check_q_within_limits(&self, q: &[T]) -> Result<(), ChainError> {
+        self.check_q(q)?;
+        let movable = self.joints.iter().filter(|j| j.dof.is_some());
+        for (coordinate, joint) in movable.enumerate() {
+            if let (JointKind::Revolute | JointKind::Prismatic, Some([lo, hi])) =
+                (joint.spec.kind, joint.spec.limits)
+            {
+                let x = q[coordinate];
+                if x < lo || x > hi {
+                    return Err(ChainError::BeyondLimits(coordinate));
+                }
+            }
+        }
+        Ok(())
     }
 
     pub(crate) fn check_q(&self, q: &[T]) -> Result<(), ChainError> {

@@ -14,6 +14,14 @@ pub struct ChainParams<T> {
     pub max_iterations: usize,
     /// Sub-intervals of the broad phase's swept balls (1 to 64, default 32).
     pub broad_pieces: usize,
+    /// Refuse a segment whose ends are outside the joints' limits
+    /// ([`ChainError::BeyondLimits`]), in
+    /// [`check_segment`](crate::chain::ChainScene::check_segment) and
+    /// [`check_path`](crate::chain::ChainScene::check_path): a planner's
+    /// sample beyond a limit is a bug to hear about, not a motion to certify.
+    /// Default `true`; `false` checks any segment (a chain whose limits are
+    /// soft, or a query of motions that are not the robot's).
+    pub within_limits: bool,
 }
 
 impl<T: Float> Default for ChainParams<T> {
@@ -22,6 +30,7 @@ impl<T: Float> Default for ChainParams<T> {
             contact_distance: T::from_f64(1e-3),
             max_iterations: 10_000,
             broad_pieces: 32,
+            within_limits: true,
         }
     }
 }
@@ -31,6 +40,14 @@ impl<T: Float> ChainParams<T> {
     #[must_use]
     pub fn with_contact_distance(mut self, d: T) -> Self {
         self.contact_distance = d;
+        self
+    }
+
+    /// With the limit check on or off
+    /// ([`within_limits`](Self::within_limits)).
+    #[must_use]
+    pub fn with_within_limits(mut self, on: bool) -> Self {
+        self.within_limits = on;
         self
     }
 

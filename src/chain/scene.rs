@@ -201,12 +201,24 @@ impl<T: Float> ChainScene<T> {
     /// `q(t) = q0 + t (q1 - q0)`, `t` in `[0, 1]`.
     ///
     /// # Errors
-    /// [`ChainError::WrongDof`] and [`ChainError::NonFiniteCoordinate`].
+    /// [`ChainError::WrongDof`] and [`ChainError::NonFiniteCoordinate`];
+    /// [`ChainError::BeyondLimits`] for an end outside the joints' limits
+    /// (unless [`ChainParams::within_limits`] is off).
     pub fn check_segment(&self, q0: &[T], q1: &[T]) -> Result<SegmentReport<T>, ChainError> {
-        self.chain.check_q(q0)?;
-        self.chain.check_q(q1)?;
+        self.check_end(q0)?;
+        self.check_end(q1)?;
         let mut work = Work::default();
         Ok(self.segment(q0, q1, &mut work))
+    }
+
+    /// A segment's end: the right length, finite, and within the limits
+    /// when [`ChainParams::within_limits`] is on.
+    fn check_end(&self, q: &[T]) -> Result<(), ChainError> {
+        if self.params.within_limits {
+            self.chain.check_q_within_limits(q)
+        } else {
+            self.chain.check_q(q)
+        }
     }
 
     /// The first contact along a path of waypoints, segment by segment; stops
@@ -220,7 +232,7 @@ impl<T: Float> ChainScene<T> {
             return Err(ChainError::InvalidParameter("a path needs two waypoints"));
         }
         for q in waypoints {
-            self.chain.check_q(q.as_ref())?;
+            self.check_end(q.as_ref())?;
         }
         let mut work = Work::default();
         let mut stats = ChainStats::default();

@@ -134,9 +134,15 @@ impl<T: Float> Chain<T> {
                     .ok_or_else(|| ChainError::UnknownName(name.into()))
             };
             let origin = pose_of(&joint.origin)?;
+            let (lower, upper) = (joint.limit.lower, joint.limit.upper);
+            let limited = matches!(kind, JointKind::Revolute | JointKind::Prismatic);
+            if limited && (lower.is_nan() || upper.is_nan()) {
+                // An infinite limit is no limit; a NaN one is a broken file.
+                return Err(ChainError::BadLimits(joint.name.clone()));
+            }
             let limits = match kind {
                 JointKind::Revolute | JointKind::Prismatic
-                    if joint.limit.lower.is_finite() && joint.limit.upper.is_finite() =>
+                    if lower.is_finite() && upper.is_finite() =>
                 {
                     Some([
                         T::from_f64(joint.limit.lower),
