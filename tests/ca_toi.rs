@@ -515,6 +515,18 @@ fn parameters_and_intervals_are_validated() {
     let pair = &mut BallPair::new(ball, ball);
     let bad = CaParams::default().with_contact_distance(f64::NAN);
     assert!(time_of_impact(pair, &m, &m, &bad).is_err(), "NaN tolerance");
+    // Surfaces that meet exactly cannot be certified in floating point: a
+    // zero contact distance is refused when the query is made.
+    for d in [0.0, -0.0, -1e-3, f64::INFINITY] {
+        let bad = CaParams::default().with_contact_distance(d);
+        assert_eq!(
+            time_of_impact(pair, &m, &m, &bad).err(),
+            Some(motion_bound::ca::CaError::InvalidParameter(
+                motion_bound::ca::Parameter::ContactDistance
+            )),
+            "contact distance {d}"
+        );
+    }
     let bad = CaParams::default().with_max_iterations(0);
     assert!(
         time_of_impact(pair, &m, &m, &bad).is_err(),

@@ -80,6 +80,10 @@ fn run<T: Float>(b: &mut Bytes<'_>, max_offset_exp: i32, max_scale_exp: i32) {
     let (Ok(a), Ok(b)) = (motion(centre_a, va, wa), motion(centre_b, [0.0; 3], wb)) else {
         return;
     };
+    if t(contact) <= T::ZERO {
+        // Below `T`'s least subnormal: a zero contact distance is refused.
+        return;
+    }
     let params = CaParams::<T>::default()
         .with_contact_distance(t(contact))
         .with_work_budget(budget);

@@ -119,7 +119,8 @@ def test_bad_queries():
     still = mb.Motion.still(np.eye(4))
     with pytest.raises(mb.QueryError, match="different intervals"):
         mb.time_of_impact(ball, still, ball, mb.Motion.still(np.eye(4), duration=2.0))
-    for kw in ({"contact_distance": -1.0}, {"contact_distance": np.nan}, {"tolerance": -1.0},
+    for kw in ({"contact_distance": -1.0}, {"contact_distance": np.nan}, {"contact_distance": 0.0},
+               {"tolerance": -1.0},
                {"max_iterations": 0}):
         with pytest.raises(mb.QueryError):
             mb.time_of_impact(ball, still, ball, still, **kw)

@@ -143,6 +143,35 @@ impl<T: Float> DirectedProbe<T> {
         }
     }
 
+    /// An upper bound of the signed rate `v . n` (along the exact unit
+    /// `n/|n|`) at which the motion's rotation centre moves along `n`: the
+    /// rate of the support `x(t) . n + rho` of a ball of any radius `rho`
+    /// centred on the rotation centre, which the rotation turns in place
+    /// (`proofs/09-ca-toi.md`, Lemma 9.7). What a body turning fast within
+    /// such a ball can be stepped by, whatever it turns.
+    ///
+    /// ```
+    /// use motion_bound::{Direction, PreparedMotion, RigidMotion};
+    /// // Spinning at 200 rad per unit time, drifting along x at 1.
+    /// let m = RigidMotion::try_from_arrays([0.0; 3], [1.0, 0.0, 0.0], [0.0, 200.0, 0.0])?;
+    /// let rate = PreparedMotion::new(&m).probe(Direction::X).centre_rate();
+    /// assert!(rate >= 1.0 && rate < 1.0 + 1e-12);
+    /// # Ok::<(), motion_bound::InputError>(())
+    /// ```
+    #[inline]
+    #[must_use]
+    pub fn centre_rate(&self) -> T {
+        one_sided_up(self.p.a, self.p.a_mag, T::ZERO, T::ZERO, T::ZERO)
+    }
+
+    /// An upper bound of `|v . n|` (along the exact unit `n/|n|`): the
+    /// absolute counterpart of [`centre_rate`](Self::centre_rate).
+    #[inline]
+    #[must_use]
+    pub fn centre_speed(&self) -> T {
+        assemble(self.p.linear_up(), T::ZERO)
+    }
+
     /// The speed bound of kind `kind` for every point of a ball (relative to
     /// the rotation centre at the epoch), in `O(1)`.
     ///
@@ -375,7 +404,7 @@ impl<T: Float> DirectedProbe<T> {
     /// `S^ = max_i max_arc u . q_i` (signed) over `points` (offsets from the
     /// rotation centre within `lever`); only called when the rotation is
     /// trusted.
-    #[inline]
+    #[inline(always)]
     fn signed_extremal(&self, points: &[[T; 3]], lever: T) -> T {
         if self.arc.full_turn {
             // Every point's direction is reached: its distance from the axis.

@@ -1,6 +1,6 @@
 //! The simplest stepper: two bounding balls.
 
-use crate::ca::driver::{gap_step, placement_error, precision_limit};
+use crate::ca::step::{gap_step, placement_error, precision_limit};
 use crate::ca::{CaParams, CaStep, StepResult, Witness};
 use crate::{BoundingBall, Direction, Float, Point3, PreparedMotion, Vec3};
 
@@ -21,9 +21,18 @@ impl<T: Float> BallPair<T> {
     pub const fn new(a: BoundingBall<T>, b: BoundingBall<T>) -> Self {
         Self { a, b }
     }
+
+    /// The balls' radii.
+    pub(crate) const fn radii(&self) -> (T, T) {
+        (self.a.radius(), self.b.radius())
+    }
 }
 
 impl<T: Float> CaStep<T> for BallPair<T> {
+    fn bounding_balls(&self) -> Option<(BoundingBall<T>, BoundingBall<T>)> {
+        Some((self.a, self.b))
+    }
+
     fn step(
         &mut self,
         t: T,
@@ -55,16 +64,41 @@ impl<T: Float> CaStep<T> for BallPair<T> {
         let (ea, pa) = placement_error(a.motion(), t, self.a.outer_radius_up());
         let (eb, pb) = placement_error(b.motion(), t, self.b.outer_radius_up());
         let kind = params.bound.cheap_kind();
+        // A ball centred on its body's rotation centre only translates: its
+        // support along n moves at the centre's rate, whatever the body
+        // turns (Lemma 9.7); any other ball at the rate of its points.
+        let centred = |ball: &BoundingBall<T>, m: &PreparedMotion<T>| {
+            *ball.centre() == m.motion().local_centre().to_array()
+        };
+        let (ca_on, cb_on) = (centred(&self.a, a), centred(&self.b, b));
         // One-sided (Lemma 10.2): A along n, B along -n.
         let (mu_a, mu_b) = if params.one_sided {
+            let (pa, pb) = (a.probe(n), b.probe(-n));
             (
-                a.probe(n).ball_rate(&self.a, kind),
-                b.probe(-n).ball_rate(&self.b, kind),
+                if ca_on {
+                    pa.centre_rate()
+                } else {
+                    pa.ball_rate(&self.a, kind)
+                },
+                if cb_on {
+                    pb.centre_rate()
+                } else {
+                    pb.ball_rate(&self.b, kind)
+                },
             )
         } else {
+            let (pa, pb) = (a.probe(n), b.probe(n));
             (
-                a.probe(n).ball_speed(&self.a, kind),
-                b.probe(n).ball_speed(&self.b, kind),
+                if ca_on {
+                    pa.centre_speed()
+                } else {
+                    pa.ball_speed(&self.a, kind)
+                },
+                if cb_on {
+                    pb.centre_speed()
+                } else {
+                    pb.ball_speed(&self.b, kind)
+                },
             )
         };
         // Along n the balls span [ca.n - ra, ca.n + ra] and [cb.n - rb, cb.n + rb].

@@ -1,12 +1,12 @@
 //! Conservative advancement of two convex shapes (cores with radii).
 
-use crate::ca::driver::{placement_error, precision_limit};
+use crate::ca::step::{placement_error, precision_limit};
 use crate::ca::{CaParams, CaStep, StepResult, Witness};
 use crate::geometry::closest::segment_segment_vec;
 use crate::geometry::gjk::{gjk_distance, GjkParams, SupportMap};
 use crate::rounding::{gap_down, step_down, sum_up};
 use crate::shape::convex::Core;
-use crate::{Convex, Direction, Float, Point3, Pose, PreparedMotion, Vec3};
+use crate::{BoundingBall, Convex, Direction, Float, Point3, Pose, PreparedMotion, Vec3};
 
 /// Conservative advancement of two convex shapes (a [`CaStep`]): balls,
 /// capsules, cuboids, cylinders, cones and polytopes, rounded or not, in any
@@ -106,6 +106,11 @@ pub(crate) fn certified_gap<T: Float>(
 }
 
 impl<T: Float> CaStep<T> for ConvexPair<'_, T> {
+    fn bounding_balls(&self) -> Option<(BoundingBall<T>, BoundingBall<T>)> {
+        let ball = |s: &Convex<'_, T>| BoundingBall::try_new([T::ZERO; 3], s.reach()).ok();
+        Some((ball(&self.a)?, ball(&self.b)?))
+    }
+
     fn step(
         &mut self,
         t: T,

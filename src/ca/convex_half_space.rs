@@ -1,7 +1,7 @@
 //! Conservative advancement of a convex shape against a half-space.
 
 use crate::ca::convex_convex::{advance, certified_gap, closing};
-use crate::ca::driver::placement_error;
+use crate::ca::step::placement_error;
 use crate::ca::{CaError, CaParams, CaStep, StepResult, Witness};
 use crate::{Convex, Float, HalfSpace, Point3, PreparedMotion, RigidMotion, Vec3};
 

@@ -10,7 +10,7 @@ use crate::ca::{
     BallPair, CaError, CaParams, CaStep, ConvexPair, GjkProximity, HalfSpacePair, MeshConvexPair,
     MeshPair, MeshParams, MeshWorkspace, Shape, StepResult, VertexSetPair, Witness, Work,
 };
-use crate::{Convex, Float, Isometry, PreparedMotion, RigidMotion, Vec3};
+use crate::{BoundingBall, Convex, Float, Isometry, PreparedMotion, RigidMotion, Vec3};
 
 /// The stepper of a pair of [`Shape`]s of any kinds, a [`CaStep`]: each
 /// pair of kinds has one stepper, taken in either order, and this is where
@@ -52,6 +52,8 @@ pub struct AnyPair<'a, T> {
     pair: Kinds<'a, T>,
     /// The stepper takes B before A.
     swapped: bool,
+    /// Balls holding A and B in their body frames (none for a half-space).
+    balls: Option<(BoundingBall<T>, BoundingBall<T>)>,
     /// A workspace given to a pair that does not descend a mesh.
     spare: Option<MeshWorkspace<T>>,
 }
@@ -94,6 +96,11 @@ impl<'a, T: Float> AnyPair<'a, T> {
     /// ball too large to be a convex shape.
     pub fn try_new(a: Shape<'a, T>, b: Shape<'a, T>) -> Result<Self, CaError> {
         use Shape::{Convex as C, HalfSpace as H, Mesh as M};
+        let ball = |s: &Shape<'a, T>| match s {
+            H(_) => None,
+            s => s.bounding_ball().ok(),
+        };
+        let balls = ball(&a).zip(ball(&b));
         let (pair, swapped) = match (a, b) {
             (Shape::Compound(_), _) | (_, Shape::Compound(_)) => {
                 (Kinds::Compound(CompoundPair::new(a, b)), false)
@@ -123,6 +130,7 @@ impl<'a, T: Float> AnyPair<'a, T> {
         Ok(Self {
             pair,
             swapped,
+            balls,
             spare: None,
         })
     }
@@ -259,6 +267,10 @@ impl<T: Float> CaStep<T> for AnyPair<'_, T> {
 
     fn work(&self) -> Work {
         self.inner_ref().work()
+    }
+
+    fn bounding_balls(&self) -> Option<(BoundingBall<T>, BoundingBall<T>)> {
+        self.balls
     }
 
     fn check_motions(&self, a: &RigidMotion<T>, b: &RigidMotion<T>) -> Result<(), CaError> {

@@ -1,93 +1,11 @@
 //! The conservative-advancement loop.
 
-use crate::ca::{CaError, CaOutcome, CaParams, CaReport, Contact, ContactCriterion, Witness, Work};
-use crate::rounding::{
-    advance_down, centre_reach_up, diff_down, lever_up, placed_reach_up, pose_error_up,
-    sum_reaches, sum_up,
+use crate::ca::step::{CaStep, StepResult};
+use crate::ca::{
+    BallPair, CaError, CaOutcome, CaParams, CaReport, Contact, ContactCriterion, Witness, Work,
 };
-use crate::{Direction, Float, PreparedMotion, RigidMotion};
-
-/// What a geometry reports at one time of a conservative-advancement query.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum StepResult<T> {
-    /// The bodies are within the contact distance.
-    Touching {
-        /// The closest features found.
-        witness: Witness<T>,
-        /// The contact normal from A to B, if known.
-        normal: Option<Direction<T>>,
-    },
-    /// The step's share of the work budget
-    /// ([`CaParams::work_budget`], less what earlier steps of the query used)
-    /// ran out before a step was certified: the query ends with
-    /// [`CaOutcome::WorkLimit`] at `t`.
-    WorkLimit,
-    /// The bodies are within the contact distance plus what the placement's
-    /// rounding can resolve, and the contact distance is below that
-    /// `resolution`: no step can be certified, and no distance within the
-    /// contact distance trusted. The query ends with
-    /// [`CaOutcome::PrecisionLimit`] at `t`.
-    PrecisionLimit {
-        /// What the certified gaps lose to rounding at `t`.
-        resolution: T,
-    },
-    /// The bodies do not touch during `[t, t + step]` (certified).
-    Advance {
-        /// The safe step; anything at least the rest of the interval means no
-        /// contact before its end. `+inf` is allowed (nothing approaches).
-        step: T,
-        /// The closest features found, if the stepper computed them.
-        witness: Option<Witness<T>>,
-        /// The separating direction used, from A to B, if any.
-        normal: Option<Direction<T>>,
-    },
-}
-
-/// A geometry that conservative advancement can query: at time `t`, with both
-/// motions restricted (and prepared) to the rest of the interval `[t, t_end]`,
-/// either "touching" (distance at most `params.contact_distance`) or a step
-/// `s` such that the bodies certainly do not touch during `[t, t + s]`.
-///
-/// The contract is soundness: a returned step must never reach past a true
-/// contact of the exact motions. The steppers of this crate meet it with the
-/// certified gaps and bounds of `proofs/09-ca-toi.md`; an implementation for
-/// another geometry can use [`gap_step`] to turn a separating gap into a step.
-pub trait CaStep<T: Float> {
-    /// Inspects the pair at time `t` (`a` and `b` are the motions restricted
-    /// to `[t, t_end]`, in the pair's frame: [`time_of_impact`]). The
-    /// `params` are the query's, with
-    /// [`work_budget`](CaParams::work_budget) what is left of it for this
-    /// step.
-    fn step(
-        &mut self,
-        t: T,
-        a: &PreparedMotion<T>,
-        b: &PreparedMotion<T>,
-        params: &CaParams<T>,
-    ) -> StepResult<T>;
-
-    /// The work this stepper has done since it was made (a running total
-    /// that never decreases between the steps of a query): what
-    /// [`time_of_impact`] charges to the query's
-    /// [`work_budget`](CaParams::work_budget) and reports in
-    /// [`CaReport::work`]. The default counts nothing; a stepper that wraps
-    /// another should forward it (else each step gets the whole budget).
-    fn work(&self) -> Work {
-        Work::ZERO
-    }
-
-    /// Whether the stepper takes these motions, checked once per query
-    /// before the first step ([`time_of_impact`] returns the error). The
-    /// default takes any.
-    ///
-    /// # Errors
-    /// The stepper's own: [`CaError::TurnedHalfSpace`] for a half-space
-    /// that turns.
-    fn check_motions(&self, a: &RigidMotion<T>, b: &RigidMotion<T>) -> Result<(), CaError> {
-        let _ = (a, b);
-        Ok(())
-    }
-}
+use crate::rounding::{advance_down, diff_down, offset_radius_up, sum_reaches, sum_up};
+use crate::{BoundingBall, Float, Point3, PreparedMotion, RigidMotion, Vec3};
 
 /// The first time of contact of two moving bodies over the motions' common
 /// interval, by conservative advancement with `stepper`.
@@ -136,6 +54,8 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
     };
     let end = motion_a.interval().end();
     let mut t = motion_a.interval().start();
+    let max_iterations = params.iteration_limit(motion_a, motion_b);
+    let mut swept = Swept::new(stepper.bounding_balls(), motion_a, motion_b);
     let mut iterations = 0;
     let mut last_step: Option<T> = None;
     let work_before = stepper.work();
@@ -147,7 +67,7 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
         })
     };
     loop {
-        if iterations == params.max_iterations {
+        if iterations == max_iterations {
             return report(
                 CaOutcome::IterationLimit { time: t },
                 iterations,
@@ -172,7 +92,7 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
         // What is left of the query's work budget is this step's.
         let used = stepper.work().saturating_sub(work_before);
         let step_params = params.with_work_budget(params.work_budget.saturating_sub(used));
-        match stepper.step(t, &pa, &pb, &step_params) {
+        match swept.step(stepper, t, (&pa, &pb), &step_params) {
             StepResult::WorkLimit => {
                 let outcome = CaOutcome::WorkLimit { time: t };
                 return report(outcome, iterations, stepper.work());
@@ -258,63 +178,77 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
     }
 }
 
-/// An upper bound of how far a body point within `radius` of the body
-/// origin, placed at time `t` by `motion.pose_at(t)` in floating point, is
-/// from its exact position (`proofs/floating-point.md`, sections "Pose" and
-/// "Orientation"), and an upper bound of the distance from the origin of
-/// every placed point (`|x0| + |v| |t| + radius + |c|`, rounded up, with `c`
-/// the rotation centre in the body frame).
-#[must_use]
-pub fn placement_error<T: Float>(motion: &RigidMotion<T>, t: T, radius: T) -> (T, T) {
-    let centre_reach = centre_reach_up(
-        motion.centre().to_vec3().norm_l1(),
-        motion.linear().norm_l1(),
-        t,
-    );
-    let lever = lever_up(radius, motion.local_reach());
-    let err = pose_error_up(
-        motion.angle_at(t),
-        lever,
-        centre_reach + motion.local_reach(),
-        !motion.orientation().is_identity(),
-    );
-    // A centre moved into a pair's frame is off the exact one by at most its
-    // slack (section "Pair frame").
-    let slack = motion.centre_slack();
-    let err = if slack > T::ZERO {
-        sum_up(err, slack)
-    } else {
-        err
-    };
-    (err, placed_reach_up(centre_reach, lever, err))
+/// The balls about both bodies' rotation centres that hold them (Lemma 9.7
+/// of `proofs/09-ca-toi.md`), and whether the bodies turn faster than they
+/// translate.
+struct Swept<T> {
+    balls: Option<BallPair<T>>,
+    /// Step the balls alone: the bodies' turning speeds (`|w| rho`) are at
+    /// least their relative translation speed, so the balls' step, where
+    /// they are apart, is the better one.
+    alone: bool,
 }
 
-/// A certified safe step from a computed gap along a direction: `gap` is
-/// `min_B fl(q . n) - max_A fl(p . n)` over the placed points of both bodies,
-/// `err_*`/`reach_*` come from [`placement_error`], and `mu_*` bound the
-/// speeds along `n` (the directed bounds of this crate). The step keeps the
-/// slab between the bodies wider than `clearance` (use
-/// [`CaParams::clearance`]; `0` for "until they touch"). Returns the step and
-/// the certified gap (`<= clearance`: no step, `0`).
-#[must_use]
-pub fn gap_step<T: Float>(gap: T, clearance: T, err: (T, T), reach: (T, T), mu: (T, T)) -> (T, T) {
-    let g = crate::rounding::gap_down(gap, err.0, err.1, reach.0 + reach.1);
-    (crate::rounding::step_down(g, clearance, mu.0, mu.1), g)
-}
-
-/// For a stepper that found a zero step: [`StepResult::PrecisionLimit`] when
-/// the placement cannot resolve the clearance (`err`, `reach` as in
-/// [`gap_step`]), so that the zero step is the rounding's, not the bodies'.
-pub(crate) fn precision_limit<T: Float>(
-    step: T,
-    clearance: T,
-    err: (T, T),
-    reach: (T, T),
-) -> Option<StepResult<T>> {
-    if step > T::ZERO {
-        return None;
+impl<T: Float> Swept<T> {
+    fn new(
+        balls: Option<(BoundingBall<T>, BoundingBall<T>)>,
+        a: &RigidMotion<T>,
+        b: &RigidMotion<T>,
+    ) -> Self {
+        let turning = a.angular_speed() > T::ZERO || b.angular_speed() > T::ZERO;
+        let about = |ball: BoundingBall<T>, m: &RigidMotion<T>| {
+            let c = m.local_centre();
+            let d = Vec3::from_array(*ball.centre()) - c;
+            let radius = sum_up(offset_radius_up(d.dot(d)), ball.radius());
+            BoundingBall::try_new(Point3::from_vec3(c), radius).ok()
+        };
+        let balls = balls
+            .filter(|_| turning)
+            .and_then(|(ba, bb)| Some(BallPair::new(about(ba, a)?, about(bb, b)?)));
+        let alone = balls.as_ref().is_some_and(|p| {
+            let (ra, rb) = p.radii();
+            let spin = a.angular_speed() * ra + b.angular_speed() * rb;
+            spin >= T::from_u32(4) * (a.linear() - b.linear()).length()
+        });
+        Self { balls, alone }
     }
-    let resolution = crate::rounding::resolution_up(err.0, err.1, reach.0 + reach.1);
-    (resolution >= clearance || resolution.is_nan())
-        .then_some(StepResult::PrecisionLimit { resolution })
+
+    /// The step at `t`: the balls' where they are apart (a step longer than
+    /// the time tolerance), alone when the bodies turn fast, else the
+    /// longer of theirs and the stepper's; the stepper's where they are not.
+    fn step<S: CaStep<T> + ?Sized>(
+        &mut self,
+        stepper: &mut S,
+        t: T,
+        (a, b): (&PreparedMotion<T>, &PreparedMotion<T>),
+        params: &CaParams<T>,
+    ) -> StepResult<T> {
+        let ball_step = match self.balls.as_mut().map(|p| p.step(t, a, b, params)) {
+            Some(StepResult::Advance { step, .. }) if step > params.time_tolerance => Some(step),
+            _ => None,
+        };
+        let Some(ball_step) = ball_step else {
+            return stepper.step(t, a, b, params);
+        };
+        if self.alone {
+            return StepResult::Advance {
+                step: ball_step,
+                witness: None,
+                normal: None,
+            };
+        }
+        match stepper.step(t, a, b, params) {
+            StepResult::Advance {
+                step,
+                witness,
+                normal,
+            } => StepResult::Advance {
+                // Both are certified: the longer (a NaN step, the balls').
+                step: if step >= ball_step { step } else { ball_step },
+                witness,
+                normal,
+            },
+            other => other,
+        }
+    }
 }

@@ -25,10 +25,11 @@ mod shape;
 // The one dispatch over pairs of kinds.
 #[cfg(feature = "alloc")]
 mod dispatch;
-// The loop, its parameters and its answer.
+// The loop, its parameters and its answer; what a stepper answers.
 mod driver;
 mod outcome;
 mod params;
+mod step;
 // One stepper per pair of kinds, each file named by the pair it serves.
 mod ball_ball;
 #[cfg(feature = "alloc")]
@@ -50,7 +51,7 @@ pub use dispatch::AnyPair;
 )]
 pub type ShapePair<'a, T> = ConvexPair<'a, T>;
 pub use convex_half_space::HalfSpacePair;
-pub use driver::{gap_step, placement_error, time_of_impact, CaStep, StepResult};
+pub use driver::time_of_impact;
 #[cfg(feature = "alloc")]
 pub use mesh::{MeshConvexPair, MeshPair, MeshWorkspace, TraversalStats};
 /// The stepper of a mesh against a convex shape or a half-space, under its
@@ -62,4 +63,5 @@ pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness, Work}
 pub use params::{BoundChoice, CaError, CaParams, MeshParams, Parameter, WitnessSearch};
 #[cfg(feature = "alloc")]
 pub use shape::{Compound, Part, Shape, ShapeKind};
+pub use step::{gap_step, placement_error, CaStep, StepResult};
 pub use vertex_set_vertex_set::{GjkProximity, Proximity, VertexSetPair};

@@ -3,7 +3,7 @@
 use core::fmt;
 
 use crate::ca::Work;
-use crate::{BoundKind, Float};
+use crate::{BoundKind, Float, RigidMotion};
 
 /// Which directed bound a conservative-advancement query uses: a policy over
 /// its many bounds, where [`BoundKind`] is the choice for one evaluation.
@@ -71,8 +71,13 @@ pub struct CaParams<T> {
     /// Contact is declared when the distance is at most this (in the scene's
     /// length unit; for meshes, the distance between their surfaces), at the
     /// start ([`CaOutcome::InitialContact`](crate::ca::CaOutcome::InitialContact))
-    /// or as soon as a step finds the bodies within it. Any finite size is
-    /// legal, larger than the bodies too. The steps keep the distance above
+    /// or as soon as a step finds the bodies within it. Any positive finite
+    /// size is legal, larger than the bodies too; `0` is refused (no
+    /// placement in floating point certifies surfaces that meet exactly),
+    /// and one below what the placement resolves at the bodies' scale and
+    /// distance from the origin ends the query with
+    /// [`CaOutcome::PrecisionLimit`](crate::ca::CaOutcome::PrecisionLimit),
+    /// which names that resolution. The steps keep the distance above
     /// half of it ([`clearance`](Self::clearance)), so the reported time is
     /// never later than the first time the distance falls to that.
     /// Default `1e-4`: set it for your scale.
@@ -82,9 +87,19 @@ pub struct CaParams<T> {
     /// [`ContactCriterion::TimeTolerance`](crate::ca::ContactCriterion::TimeTolerance)
     /// (the bodies approach too fast to resolve further). Default `1e-9`.
     pub time_tolerance: T,
-    /// The most iterations before [`CaOutcome::IterationLimit`](crate::ca::CaOutcome::IterationLimit).
-    /// Default `100`.
+    /// The most iterations before [`CaOutcome::IterationLimit`](crate::ca::CaOutcome::IterationLimit)
+    /// for bodies that do not turn; a query's limit adds
+    /// [`iterations_per_turn`](Self::iterations_per_turn) for each turn its
+    /// bodies make ([`iteration_limit`](Self::iteration_limit)). Default `100`.
     pub max_iterations: u32,
+    /// The iterations a query is given for each full turn (`2 pi` rad) its
+    /// two bodies make over the interval, on top of
+    /// [`max_iterations`](Self::max_iterations): a body that turns many
+    /// times comes near the other many times, and each near pass takes its
+    /// own steps. Default `16` (the fast-spin fly-bys of
+    /// `examples/fast_spins.rs` need at most about 9 a turn:
+    /// `docs/performance.md`); `0` for a limit that does not follow the motion.
+    pub iterations_per_turn: u32,
     /// Which bound to use. Default [`BoundChoice::Auto`].
     pub bound: BoundChoice,
     /// The time-resolved step: each iteration takes its bounds over the
@@ -126,6 +141,7 @@ impl<T: Float> Default for CaParams<T> {
             contact_distance: T::from_f64(1e-4),
             time_tolerance: T::from_f64(1e-9),
             max_iterations: 100,
+            iterations_per_turn: 16,
             bound: BoundChoice::Auto,
             horizon_factor: T::TWO,
             one_sided: true,
@@ -180,6 +196,53 @@ impl<T: Float> CaParams<T> {
         self
     }
 
+    /// With another number of iterations per turn (`0`: the limit is
+    /// [`max_iterations`](Self::max_iterations) whatever the bodies turn).
+    #[must_use]
+    pub const fn with_iterations_per_turn(mut self, n: u32) -> Self {
+        self.iterations_per_turn = n;
+        self
+    }
+
+    /// The iteration limit of a query of these motions:
+    /// [`max_iterations`](Self::max_iterations) plus
+    /// [`iterations_per_turn`](Self::iterations_per_turn) times the turns
+    /// both bodies make over the interval (`(|w_a| + |w_b|) (t1 - t0) / 2 pi`,
+    /// rounded up), saturating at `u32::MAX`.
+    ///
+    /// ```
+    /// use motion_bound::ca::CaParams;
+    /// use motion_bound::RigidMotion;
+    /// let still = RigidMotion::try_from_arrays([0.0; 3], [1.0, 0.0, 0.0], [0.0; 3])?;
+    /// // 200 rad over [0, 1]: 31.8 turns, 32 with the rounding up.
+    /// let spinning = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0, 200.0, 0.0])?;
+    /// let p = CaParams::<f64>::default();
+    /// assert_eq!(p.iteration_limit(&still, &still), 100);
+    /// assert_eq!(p.iteration_limit(&spinning, &still), 100 + 16 * 32);
+    /// # Ok::<(), motion_bound::InputError>(())
+    /// ```
+    #[must_use]
+    pub fn iteration_limit(&self, a: &RigidMotion<T>, b: &RigidMotion<T>) -> u32 {
+        if self.iterations_per_turn == 0 {
+            return self.max_iterations;
+        }
+        let length = a.interval().end().to_f64() - a.interval().start().to_f64();
+        let angle = (a.angular_speed().to_f64() + b.angular_speed().to_f64()) * length;
+        let turns = angle / core::f64::consts::TAU;
+        if turns.is_nan() || turns <= 0.0 {
+            return self.max_iterations;
+        }
+        // Rounded up (`as` truncates and saturates; `ceil` needs `std`).
+        let whole = turns as u32;
+        let whole = if f64::from(whole) < turns {
+            whole.saturating_add(1)
+        } else {
+            whole
+        };
+        self.max_iterations
+            .saturating_add(whole.saturating_mul(self.iterations_per_turn))
+    }
+
     /// With another bound choice.
     #[must_use]
     pub const fn with_bound(mut self, b: BoundChoice) -> Self {
@@ -219,12 +282,16 @@ impl<T: Float> CaParams<T> {
     /// Checks the parameters.
     ///
     /// # Errors
-    /// [`CaError::InvalidParameter`] naming a tolerance that is negative, NaN
+    /// [`CaError::InvalidParameter`] naming a zero contact distance, a
+    /// tolerance that is negative, NaN
     /// or infinite, a zero iteration limit, or a horizon factor that is
     /// neither `0` nor above `1`.
     pub fn validate(&self) -> Result<(), CaError> {
         let ok = |x: T| x.is_finite() && x >= T::ZERO;
-        if !ok(self.contact_distance) {
+        // A zero contact distance asks for surfaces that meet exactly, which
+        // no placement in floating point can certify (every query would end
+        // in `PrecisionLimit`): refused here, where it is made.
+        if !(ok(self.contact_distance) && self.contact_distance > T::ZERO) {
             return Err(CaError::InvalidParameter(Parameter::ContactDistance));
         }
         if !ok(self.time_tolerance) {
@@ -313,7 +380,7 @@ impl<T: Float> MeshParams<T> {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 #[non_exhaustive]
 pub enum Parameter {
-    /// [`CaParams::contact_distance`]: finite and at least `0`.
+    /// [`CaParams::contact_distance`]: positive and finite.
     ContactDistance,
     /// [`CaParams::time_tolerance`]: finite and at least `0`.
     TimeTolerance,
@@ -330,7 +397,7 @@ pub enum Parameter {
 impl fmt::Display for Parameter {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(match self {
-            Self::ContactDistance => "contact_distance (finite, at least 0)",
+            Self::ContactDistance => "contact_distance (positive and finite)",
             Self::TimeTolerance => "time_tolerance (finite, at least 0)",
             Self::MaxIterations => "max_iterations (at least 1)",
             Self::HorizonFactor => "horizon_factor (0 or above 1)",

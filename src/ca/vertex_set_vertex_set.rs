@@ -1,6 +1,6 @@
 //! Conservative advancement of two convex bodies through any proximity oracle.
 
-use crate::ca::driver::{gap_step, placement_error, precision_limit};
+use crate::ca::step::{gap_step, placement_error, precision_limit};
 use crate::ca::{BoundChoice, CaParams, CaStep, StepResult, Witness};
 use crate::rounding::diff_up;
 use crate::{BoundKind, Direction, Float, Point3, Pose, PreparedMotion, Vec3, VertexSet};

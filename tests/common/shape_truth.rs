@@ -11,7 +11,10 @@
 #![allow(dead_code, unreachable_pub)]
 
 use motion_bound::testkit::ground_truth::place;
-use motion_bound::{try_triangle_triangle, Isometry, Point3, RigidMotion, TriMesh};
+use motion_bound::testkit::toi::Rng;
+use motion_bound::{
+    try_triangle_triangle, Convex, Isometry, Point3, RigidMotion, TriMesh, VertexSet,
+};
 
 /// Sides of the inscribed polygons of rims.
 pub const SIDES: usize = 16;
@@ -245,4 +248,53 @@ pub fn first_sampled_landing(
                 })
             })
         })
+}
+
+/// Seven convex kinds of about half a unit across, each with its ground
+/// truth: a ball, a capsule, a cuboid, a rounded cuboid, a cylinder, a cone
+/// and the hull of eight random points (`rng`).
+pub fn convex_kinds(rng: &mut Rng) -> Vec<(&'static str, Convex<'static, f64>, Solid)> {
+    let (h, r, rho) = (0.4, 0.15, 0.35);
+    let half = [0.4, 0.25, 0.3];
+    let vertices: &'static [[f64; 3]] = Box::leak(
+        (0..8)
+            .map(|_| rng.direction().map(|x| x * rng.range(0.2, 0.45)))
+            .collect::<Vec<_>>()
+            .into_boxed_slice(),
+    );
+    let mut hull = Vec::new();
+    for i in 0..vertices.len() {
+        for j in i + 1..vertices.len() {
+            for k in j + 1..vertices.len() {
+                hull.push([vertices[i], vertices[j], vertices[k]]);
+            }
+        }
+    }
+    let set = VertexSet::try_new(vertices).expect("vertices");
+    let ok = |c: Result<Convex<'static, f64>, _>| c.expect("a valid shape");
+    vec![
+        ("ball", ok(Convex::try_ball(r)), Solid::ball(r)),
+        (
+            "capsule",
+            ok(Convex::try_capsule(h, r)),
+            Solid::capsule(h, r),
+        ),
+        (
+            "cuboid",
+            ok(Convex::try_cuboid(half)),
+            Solid::cuboid(half, 0.0),
+        ),
+        (
+            "rounded cuboid",
+            ok(Convex::try_cuboid(half).and_then(|s| s.try_rounded(0.1))),
+            Solid::cuboid(half, 0.1),
+        ),
+        (
+            "cylinder",
+            ok(Convex::try_cylinder(h, rho)),
+            Solid::cylinder(h, rho),
+        ),
+        ("cone", ok(Convex::try_cone(h, rho)), Solid::cone(h, rho)),
+        ("polytope", Convex::polytope(set), Solid::one(hull, 0.0)),
+    ]
 }

@@ -8,13 +8,13 @@ use super::stats::TraversalStats;
 use crate::bvh::{BallTree, Hierarchy};
 use crate::ca::convex_convex::PlacedCore;
 use crate::ca::convex_half_space::check_half_space;
-use crate::ca::driver::placement_error;
+use crate::ca::step::placement_error;
 use crate::ca::{CaError, CaParams, CaStep, StepResult, Witness, WitnessSearch, Work};
 use crate::geometry::gjk::{gjk_distance, GjkParams};
 use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down, sum_up};
 use crate::{
-    BoundKind, Convex, ConvexPolytope, Direction, Float, HalfSpace, Point3, Pose, PreparedMotion,
-    RigidMotion, Vec3,
+    BoundKind, BoundingBall, Convex, ConvexPolytope, Direction, Float, HalfSpace, Point3, Pose,
+    PreparedMotion, RigidMotion, Vec3,
 };
 
 /// What the mesh is taken against.
@@ -137,6 +137,16 @@ impl<T: Float> Side<'_, '_, T> {
 }
 
 impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
+    fn bounding_balls(&self) -> Option<(BoundingBall<T>, BoundingBall<T>)> {
+        match &self.other {
+            Other::Shape(s) => Some((
+                self.mesh.nodes[0].ball,
+                BoundingBall::try_new([T::ZERO; 3], s.reach()).ok()?,
+            )),
+            Other::Plane(_) => None,
+        }
+    }
+
     fn check_motions(&self, _a: &RigidMotion<T>, b: &RigidMotion<T>) -> Result<(), CaError> {
         match self.other {
             Other::Plane(_) => check_half_space(b),

@@ -9,7 +9,7 @@ use super::traversal::Descent;
 use crate::bvh::BallTree;
 use crate::ca::{CaError, CaParams, CaStep, MeshParams, StepResult, WitnessSearch, Work};
 use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down};
-use crate::{Direction, Float, PreparedMotion};
+use crate::{BoundingBall, Direction, Float, PreparedMotion};
 
 /// Conservative advancement of two non-convex triangle meshes (a
 /// [`CaStep`]): one step is a simultaneous descent of both ball trees.
@@ -158,6 +158,10 @@ impl<'a, T: Float> MeshPair<'a, T> {
 }
 
 impl<T: Float> CaStep<T> for MeshPair<'_, T> {
+    fn bounding_balls(&self) -> Option<(BoundingBall<T>, BoundingBall<T>)> {
+        Some((self.descent.a.nodes[0].ball, self.descent.b.nodes[0].ball))
+    }
+
     // One step at time `t`, in stages: the bodies placed (`Frame::new`),
     // the seeds measured (`measure_seeds`), the descent of both hierarchies
     // (`descend`), and the verdict from what they found (`Found::verdict`).

@@ -4,7 +4,7 @@
 //! 9.5).
 
 use crate::bvh::{Hierarchy, Leaf};
-use crate::ca::driver::placement_error;
+use crate::ca::step::placement_error;
 use crate::rounding::{add_up, crude_speed_up, lever_up, piece_speed_margin_up, BoxError};
 use crate::{BoundKind, BoundingBall, Direction, Float, Pose, PreparedMotion, Vec3};
 

@@ -7,7 +7,7 @@ use super::placed::{slab_gap, Placed, PlacedNode, Rates};
 use super::seeds::Seeds;
 use super::stats::TraversalStats;
 use crate::bvh::Hierarchy;
-use crate::ca::driver::gap_step;
+use crate::ca::step::gap_step;
 use crate::ca::Witness;
 use crate::geometry::closest::triangle_triangle_vec;
 use crate::rounding::{gap_down, step_down};
