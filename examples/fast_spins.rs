@@ -5,7 +5,8 @@
 //! (`tests/common/shape_truth.rs`).
 //!
 //! Run with `cargo run --release --example fast_spins` (`--queries N` per
-//! pair of kinds, `--spins 20,60,200`, `--seed S`).
+//! pair of kinds, `--spins 20,60,200`, `--seed S`, `--no-truth` for the
+//! times alone, `--verbose` for a line per query).
 //!
 //! A query is *decided* when it ends in a contact or `Separated`; an
 //! undecided one (`IterationLimit`, `WorkLimit`, `PrecisionLimit`) is what
@@ -93,9 +94,19 @@ fn samples(speed: f64) -> usize {
     ((speed / 0.01).ceil() as usize).max(200)
 }
 
+/// What to print and check.
+#[derive(Clone, Copy)]
+struct Opts {
+    /// Check against the ground truth (`--no-truth`: times only).
+    truth: bool,
+    /// One line per query (`--verbose`).
+    verbose: bool,
+}
+
 /// Runs one query (timed, with its pair made inside), and its ground truth
 /// up to the reported time.
 fn run(
+    opts: Opts,
     a: Shape<'static, f64>,
     ma: &RigidMotion<f64>,
     b: Shape<'static, f64>,
@@ -123,25 +134,27 @@ fn run(
     let ms = start.elapsed().as_secs_f64() * 1e3;
     let end = report.outcome.earliest_possible_contact().unwrap_or(1.0);
     let n = ((samples(speed) as f64 * end).ceil() as usize).max(1);
-    if std::env::var_os("FAST_SPINS_VERBOSE").is_some() {
+    if opts.verbose {
         println!(
             "  {ms:.2} ms, {} iterations, {:?}, {:?}",
             report.iterations, report.work, report.outcome
         );
     }
-    let truth = if std::env::var_os("FAST_SPINS_NO_TRUTH").is_some() {
-        None
-    } else {
-        truth(end, n)
-    };
+    let truth = if opts.truth { truth(end, n) } else { None };
     tally.add(&report.outcome, report.iterations, ms, truth);
 }
 
 fn main() {
-    let mut args = Args::from_env("fast_spins [--queries 3] [--spins 20,60,200] [--seed 38]");
+    let mut args = Args::from_env(
+        "fast_spins [--queries 3] [--spins 20,60,200] [--seed 38] [--no-truth] [--verbose]",
+    );
     let queries: usize = args.value_or("--queries", 3);
     let spins: String = args.value_or("--spins", "20,60,200".to_string());
     let seed: u64 = args.value_or("--seed", 38);
+    let opts = Opts {
+        truth: !args.flag("--no-truth"),
+        verbose: args.flag("--verbose"),
+    };
     args.finish();
     let spins: Vec<f64> = spins
         .split(',')
@@ -193,7 +206,7 @@ fn main() {
                     let truth = |end: f64, n: usize| {
                         first_sampled_contact(&a.solid, &ma, &b.solid, &mb, (0.0, end), n)
                     };
-                    run(a.shape, &ma, b.shape, &mb, truth, speed, &mut convex);
+                    run(opts, a.shape, &ma, b.shape, &mb, truth, speed, &mut convex);
                 }
             }
         }
@@ -205,7 +218,16 @@ fn main() {
                 let truth = |end: f64, n: usize| {
                     first_sampled_contact(&kind.solid, &ma, &bunny.solid, &mb, (0.0, end), n)
                 };
-                run(kind.shape, &ma, bunny.shape, &mb, truth, speed, &mut mesh);
+                run(
+                    opts,
+                    kind.shape,
+                    &ma,
+                    bunny.shape,
+                    &mb,
+                    truth,
+                    speed,
+                    &mut mesh,
+                );
             }
         }
         // The bunny thrown at the ground.
@@ -229,6 +251,7 @@ fn main() {
                 first_sampled_landing(&bunny.solid, &ma, &mg, m, (0.0, end), n)
             };
             run(
+                opts,
                 bunny.shape,
                 &ma,
                 Shape::HalfSpace(ground),

@@ -6,6 +6,9 @@
 //!
 //! * Building the shapes gives `Ok` (their parameters are in range by
 //!   construction) and the query never panics and returns `Ok`.
+//! * Under the default parameters a query takes at most ten times the
+//!   default work budget's time bound (`TIME_BOUND_MS`), fast spins
+//!   (up to 300 rad per unit time) included.
 //! * The reported first possible contact is never later than the first of
 //!   33 sampled times at which the bodies touch, and `Separated` is never
 //!   reported when sampling finds a contact (the ground truth of
@@ -25,6 +28,9 @@ use motion_bound::ca::{time_of_impact, AnyPair, CaParams, Compound, Part, Shape}
 use motion_bound::{BallTree, Convex, HalfSpace, Isometry, RigidMotion, Rotation, Vec3};
 use motion_bound_fuzz::Bytes;
 use shape_truth::{first_sampled_contact, first_sampled_landing, Solid};
+
+/// A query's time bound: ten times the default work budget's 50 ms.
+const TIME_BOUND_MS: u128 = 500;
 
 /// Ground-truth samples over `[0, 1]` (33 times).
 const SAMPLES: usize = 32;
@@ -140,12 +146,11 @@ fn run(data: &[u8]) {
     let (bb, tb) = body(&mut b, true);
     let (sa, sb) = (ba.shape(), bb.shape());
     let is_ground = matches!(sb, Shape::HalfSpace(_));
-    let spin = |b: &mut Bytes<'_>| {
-        if b.u8().is_multiple_of(4) {
-            [0.0; 3]
-        } else {
-            vector(b, 12.0)
-        }
+    // Still, turning a few times, or fast (up to about 50 turns: Lemma 9.7).
+    let spin = |b: &mut Bytes<'_>| match b.u8() % 8 {
+        0 | 1 => [0.0; 3],
+        2 => vector(b, 300.0),
+        _ => vector(b, 12.0),
     };
     let ma = RigidMotion::try_from_arrays(vector(&mut b, 2.0), vector(&mut b, 4.0), spin(&mut b))
         .expect("bounded motion");
@@ -158,7 +163,16 @@ fn run(data: &[u8]) {
     let contact = [1e-3, 1e-6, 1e-2][usize::from(b.u8() % 3)];
     let params = CaParams::default().with_contact_distance(contact);
     let mut pair = AnyPair::try_new(sa, sb).expect("never two half-spaces");
+    let start = std::time::Instant::now();
     let report = time_of_impact(&mut pair, &ma, &mb, &params).expect("a valid query");
+    // The default work budget bounds a query's time (about 50 ms,
+    // `CaParams::DEFAULT_WORK_BUDGET`); ten times that under the fuzzer's
+    // instrumentation.
+    let elapsed = start.elapsed();
+    assert!(
+        elapsed.as_millis() <= TIME_BOUND_MS,
+        "SLOW: {elapsed:?} for {report:?}"
+    );
     let truth = if is_ground {
         first_sampled_landing(&ta, &ma, &mb, [0.0, 1.0, 0.0], (0.0, 1.0), SAMPLES)
     } else {

@@ -226,6 +226,6 @@ pub(crate) fn advance<T: Float>(
 /// GJK's relative tolerance for curved cores (which converge only
 /// asymptotically): `2^-30`, or `256 u` where that is larger (`f32`). The
 /// direction it gives is only a choice (Lemma 12.1 holds for any).
-fn gjk_tolerance<T: Float>() -> T {
+pub(crate) fn gjk_tolerance<T: Float>() -> T {
     (T::from_u32(256) * T::UNIT_ROUNDOFF).max_nan(T::from_f64(1.0 / 1_073_741_824.0))
 }

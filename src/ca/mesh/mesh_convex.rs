@@ -6,6 +6,7 @@ use super::placed::{Placed, PlacedNode};
 use super::queue::{MeshWorkspace, Pending, Queued};
 use super::stats::TraversalStats;
 use crate::bvh::{BallTree, Hierarchy};
+use crate::ca::convex_convex::gjk_tolerance;
 use crate::ca::convex_convex::PlacedCore;
 use crate::ca::convex_half_space::check_half_space;
 use crate::ca::step::placement_error;
@@ -368,7 +369,10 @@ impl<T: Float> MeshConvexPair<'_, T> {
                             shape: side.shape,
                             pose: &side.pose,
                         },
-                        &GjkParams::default(),
+                        // As `ConvexPair`'s: curved cores converge only
+                        // asymptotically, and the direction is only a choice
+                        // (the gap along it is measured, Lemma 12.1).
+                        &GjkParams::default().with_rel_tol(gjk_tolerance::<T>()),
                     )
                 });
                 let Ok(c) = closest else {
