@@ -12,7 +12,7 @@
 //! undecided one (`IterationLimit`, `WorkLimit`, `PrecisionLimit`) is what
 //! an engine must treat as a contact. The ground truth samples each query up
 //! to its reported time, densely enough that the fastest point moves about
-//! 0.01 between samples; a sampled contact is a true contact, so a query is
+//! 0.02 between samples; a sampled contact is a true contact, so a query is
 //! MISSED when it reports no possible contact and the sampling finds one,
 //! LATE when its first possible contact is after the sampled one. The time
 //! of a query includes making its pair (`AnyPair::try_new`).
@@ -89,9 +89,9 @@ impl Tally {
 }
 
 /// Samples over `[0, 1]` for a fastest point speed of `speed`: a sample
-/// every 0.01 of travel, at least 200.
+/// every 0.02 of travel, at least 200.
 fn samples(speed: f64) -> usize {
-    ((speed / 0.01).ceil() as usize).max(200)
+    ((speed / 0.02).ceil() as usize).max(200)
 }
 
 /// What to print and check.

@@ -18,6 +18,10 @@ use crate::{
     PreparedMotion, RigidMotion, Vec3,
 };
 
+/// A node whose gap to B is at least this many times its ball's radius is
+/// settled with its own step, not split (`MeshParams::far_ratio`'s default).
+const FAR_RATIO: f64 = 6.0;
+
 /// What the mesh is taken against.
 #[derive(Clone, Copy, Debug)]
 enum Other<'a, T> {
@@ -201,7 +205,9 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
         let root = NodeStep::Near(-T::INFINITY).resolved(limited);
         self.ws.enqueue(Pending::new(root, (0, 0), (0, 0)));
         while let Some(Queued { slot, .. }) = self.ws.pop() {
-            let Pending { near, key, i, .. } = self.ws.pending[slot as usize];
+            let Pending {
+                near, key, i, far, ..
+            } = self.ws.pending[slot as usize];
             let key = T::from_f64(key.0);
             let out_of_work = self.stats.out_of_work(&start, budget);
             match found.head((near, key), (best, T::ONE), first_only, out_of_work) {
@@ -215,6 +221,14 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
                 Head::OutOfWork => return StepResult::WorkLimit,
             }
             self.stats.node_pairs += 1;
+            if far {
+                // Splitting a node this far from B for its size would gain
+                // little: its own step is safe for everything below it
+                // (Lemma 9.2, as `MeshPair`'s settled pairs).
+                self.stats.settled += 1;
+                best = best.min_nan(key);
+                continue;
+            }
             let node = &self.mesh.nodes[i as usize];
             if let Some(li) = node.leaf() {
                 self.leaf(
@@ -327,9 +341,12 @@ impl<T: Float> MeshConvexPair<'_, T> {
             pa.motion.probe(n).ball_speed(&node.ball, kind)
         };
         let mu_b = side.rate(n, kind, one_sided);
+        // Far for its size (`MeshParams::far_ratio`'s default): splitting
+        // the node could widen its gap by at most its ball's diameter.
+        let far = gap >= T::from_f64(FAR_RATIO) * node.ball.radius();
         NodeStep::Apart {
             step: step_down(g, clearance, mu_a, mu_b),
-            far: false,
+            far,
         }
     }
 
