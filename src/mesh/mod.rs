@@ -1,11 +1,13 @@
 //! Triangle meshes for the bodies of a CA time-of-impact engine: an owned,
-//! validated [`TriMesh`], its topology checks, and OFF and STL (and, with
-//! the `obj` feature, OBJ) input.
+//! validated [`TriMesh`], its topology checks, its declaration as a solid
+//! and the exact inside test, and OFF and STL (and, with the `obj` feature,
+//! OBJ) input.
 
 mod error;
 #[cfg(feature = "obj")]
 mod obj;
 mod off;
+mod solid;
 mod stl;
 mod topology;
 mod trimesh;
