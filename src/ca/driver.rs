@@ -87,6 +87,27 @@ pub trait CaStep<T: Float> {
         let _ = (a, b);
         Ok(())
     }
+
+    /// An overlap at the query's start that the steps do not measure: a
+    /// body starting inside a solid mesh (`TriMesh::try_solid`,
+    /// `proofs/09-ca-toi.md`, Lemma 9.7). [`time_of_impact`] asks once per
+    /// query, at its start `t`, after the first step when that step neither
+    /// touched nor ran out of work, with the first step's motions and
+    /// `params` holding what is left of the budget. A result replaces the
+    /// first step's: `Touching` ends the query with
+    /// [`CaOutcome::InitialContact`], `WorkLimit` with
+    /// [`CaOutcome::WorkLimit`]. The default finds nothing; a stepper that
+    /// wraps another should forward it.
+    fn initial_overlap(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> Option<StepResult<T>> {
+        let _ = (t, a, b, params);
+        None
+    }
 }
 
 /// The first time of contact of two moving bodies over the motions' common
@@ -172,7 +193,21 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
         // What is left of the query's work budget is this step's.
         let used = stepper.work().saturating_sub(work_before);
         let step_params = params.with_work_budget(params.work_budget.saturating_sub(used));
-        match stepper.step(t, &pa, &pb, &step_params) {
+        let mut result = stepper.step(t, &pa, &pb, &step_params);
+        if iterations == 1
+            && matches!(
+                result,
+                StepResult::Advance { .. } | StepResult::PrecisionLimit { .. }
+            )
+        {
+            // A body starting inside a solid mesh (Lemma 9.7).
+            let used = stepper.work().saturating_sub(work_before);
+            let left = params.with_work_budget(params.work_budget.saturating_sub(used));
+            if let Some(r) = stepper.initial_overlap(t, &pa, &pb, &left) {
+                result = r;
+            }
+        }
+        match result {
             StepResult::WorkLimit => {
                 let outcome = CaOutcome::WorkLimit { time: t };
                 return report(outcome, iterations, stepper.work());

@@ -15,5 +15,6 @@ mod trimesh;
 #[cfg(feature = "obj")]
 pub use error::ObjError;
 pub use error::{MeshError, OffError, OffErrorKind};
+pub(crate) use topology::component_points;
 pub use topology::EdgeReport;
 pub use trimesh::TriMesh;
