@@ -46,14 +46,19 @@ class Body:
     def faces(self) -> Optional[np.ndarray]:
         """A mesh's `(m, 3)` int64 triangles, else None."""
     @property
+    def solid(self) -> Optional[bool]:
+        """A mesh's: solid (a body starting inside is in contact) or hollow; else None."""
+    @property
     def reach(self) -> float:
         """An upper bound of every point's distance from the body origin."""
 
-def mesh(vertices: ArrayLike, faces: ArrayLike) -> Body:
-    """A triangle mesh: `(n, 3)` real vertices, `(m, 3)` integer faces."""
+def mesh(vertices: ArrayLike, faces: ArrayLike, solid: Optional[bool] = None) -> Body:
+    """A triangle mesh: `(n, 3)` real vertices, `(m, 3)` integer faces. `solid=None`: solid
+    (a body starting inside is in contact) when closed and wound outward, else hollow;
+    `True`: solid or `MeshError`; `False`: hollow."""
 
-def from_trimesh(mesh: Any) -> Body:
-    """The body of a `trimesh.Trimesh` (its vertices and faces)."""
+def from_trimesh(mesh: Any, solid: Optional[bool] = None) -> Body:
+    """The body of a `trimesh.Trimesh` (its vertices and faces); `solid` as for `mesh`."""
 
 def ball(radius: float) -> Body: ...
 def capsule(half_height: float, radius: float) -> Body:

@@ -1,4 +1,4 @@
-//! Fast spins (`proofs/09-ca-toi.md`, Lemma 9.7): a body turning many times
+//! Fast spins (`proofs/09-ca-toi.md`, Lemma 9.8): a body turning many times
 //! over the interval stays in its ball about the rotation centre, which
 //! only translates; the iteration limit follows the turns.
 //!

@@ -563,7 +563,7 @@ fn a_scene_of_every_kind_matches_each_pair_alone_and_culls_only_what_cannot_touc
                 .unwrap();
                 // Through the general convex stepper: another computation,
                 // whose steps (and the balls the driver steps fast turns by,
-                // Lemma 9.7) differ, so only the verdict must agree.
+                // Lemma 9.8) differ, so only the verdict must agree.
                 let general = time_of_impact(
                     &mut AnyPair::try_new(any_shape(bi), any_shape(bj)).unwrap(),
                     bi.motion(),

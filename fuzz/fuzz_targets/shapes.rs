@@ -146,7 +146,7 @@ fn run(data: &[u8]) {
     let (bb, tb) = body(&mut b, true);
     let (sa, sb) = (ba.shape(), bb.shape());
     let is_ground = matches!(sb, Shape::HalfSpace(_));
-    // Still, turning a few times, or fast (up to about 50 turns: Lemma 9.7).
+    // Still, turning a few times, or fast (up to about 50 turns: Lemma 9.8).
     let spin = |b: &mut Bytes<'_>| match b.u8() % 8 {
         0 | 1 => [0.0; 3],
         2 => vector(b, 300.0),

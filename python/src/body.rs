@@ -74,8 +74,17 @@ pub(crate) struct MeshData {
 }
 
 impl MeshData {
-    fn new(vertices: Vec<[f64; 3]>, faces: Vec<[u32; 3]>) -> PyResult<Self> {
+    /// The mesh, solid as `solid` asks: `Some(true)` solid (refused with
+    /// `MeshError` unless closed and outward-wound), `Some(false)` hollow,
+    /// `None` solid exactly when it is closed and outward-wound.
+    fn new(vertices: Vec<[f64; 3]>, faces: Vec<[u32; 3]>, solid: Option<bool>) -> PyResult<Self> {
         let mesh = TriMesh::try_new(vertices, faces).map_err(mesh_err)?;
+        let solid = solid.unwrap_or_else(|| mesh.is_closed() && mesh.signed_volume() > 0.0);
+        let mesh = if solid {
+            mesh.try_solid().map_err(mesh_err)?
+        } else {
+            mesh
+        };
         let tree = BallTree::try_from_mesh(&mesh).map_err(input)?;
         Ok(Self { mesh, tree })
     }
@@ -217,6 +226,16 @@ impl Body {
         }
     }
 
+    /// Whether a mesh is solid (a body starting inside it is in contact) or
+    /// hollow (its triangles alone); `None` for other kinds.
+    #[getter]
+    fn solid(&self) -> Option<bool> {
+        match &self.data {
+            Data::Mesh(m) => Some(m.mesh.is_solid()),
+            _ => None,
+        }
+    }
+
     /// An upper bound of every point's distance from the body's origin
     /// (`inf` for a half-space).
     #[getter]
@@ -253,9 +272,10 @@ impl Body {
                 }
             },
             Data::Hull(h) => vec![rows_to_numpy(py, &h.points)?, float(h.rounding)?],
-            Data::Mesh(_) => {
+            Data::Mesh(m) => {
                 let b = slf.as_any();
-                vec![b.getattr("vertices")?, b.getattr("faces")?]
+                let solid = m.mesh.is_solid().into_pyobject(py)?.to_owned().into_any();
+                vec![b.getattr("vertices")?, b.getattr("faces")?, solid]
             }
             Data::HalfSpace { normal, .. } => vec![to_numpy(py, normal.to_vec(), &[3])?],
             Data::Compound { given, .. } => {
@@ -294,9 +314,10 @@ impl Body {
             }
             Data::Hull(h) => format!("convex_hull({} points)", h.points.len()),
             Data::Mesh(m) => format!(
-                "mesh({} vertices, {} triangles)",
+                "mesh({} vertices, {} triangles, {})",
                 m.mesh.vertices().len(),
-                m.mesh.triangles().len()
+                m.mesh.triangles().len(),
+                if m.mesh.is_solid() { "solid" } else { "hollow" }
             ),
             Data::HalfSpace { normal, .. } => format!("half_space({normal:?})"),
             Data::Compound { given, .. } => format!("compound({} parts)", given.len()),
@@ -318,28 +339,45 @@ fn convex_body(primitive: Primitive, rounding: f64) -> PyResult<Body> {
 /// `faces` (an `(m, 3)` array of integer indices into `vertices`). Its ball
 /// tree is built here, once; the mesh need not be closed or convex.
 ///
+/// `solid`: a solid mesh is the region it bounds, so a body starting inside
+/// it is in contact (`initial_contact`); a hollow one is its triangles
+/// alone, and a body wholly inside touches nothing. `None` (the default):
+/// solid when the mesh is closed (every edge shared by two triangles running
+/// along it in opposite directions, trimesh's `is_watertight` and
+/// `is_winding_consistent`) and wound outward (positive volume), hollow
+/// otherwise. `True`: solid, or `MeshError` if it is not closed and
+/// outward-wound. `False`: hollow.
+///
 /// Raises `InputError` for NaN, infinite or out-of-range vertices,
-/// `MeshError` for an index out of range or no triangle, `ValueError` for a
-/// wrong shape, `TypeError` for a wrong dtype (float indices, say).
+/// `MeshError` for an index out of range, no triangle, or a mesh that cannot
+/// be solid, `ValueError` for a wrong shape, `TypeError` for a wrong dtype
+/// (float indices, say).
 #[pyfunction]
-fn mesh(vertices: &Bound<'_, PyAny>, faces: &Bound<'_, PyAny>) -> PyResult<Body> {
+#[pyo3(signature = (vertices, faces, solid = None))]
+fn mesh(
+    vertices: &Bound<'_, PyAny>,
+    faces: &Bound<'_, PyAny>,
+    solid: Option<bool>,
+) -> PyResult<Body> {
     let v = rows3(vertices, "vertices")?;
     let f = triangles(faces, "faces")?;
     Ok(Body {
-        data: Data::Mesh(MeshData::new(v, f)?),
+        data: Data::Mesh(MeshData::new(v, f, solid)?),
     })
 }
 
 /// The body of a `trimesh.Trimesh` (its `vertices` and `faces`); trimesh is
-/// imported only by the caller.
+/// imported only by the caller. `solid` as for `mesh`: by default solid
+/// when the mesh is closed and outward-wound.
 #[pyfunction]
-fn from_trimesh(mesh_obj: &Bound<'_, PyAny>) -> PyResult<Body> {
+#[pyo3(signature = (mesh_obj, solid = None))]
+fn from_trimesh(mesh_obj: &Bound<'_, PyAny>, solid: Option<bool>) -> PyResult<Body> {
     let (Ok(v), Ok(f)) = (mesh_obj.getattr("vertices"), mesh_obj.getattr("faces")) else {
         return Err(PyTypeError::new_err(
             "from_trimesh takes an object with `vertices` and `faces` (a trimesh.Trimesh)",
         ));
     };
-    mesh(&v, &f)
+    mesh(&v, &f, solid)
 }
 
 /// A ball of `radius` centred at the body origin.
@@ -414,7 +452,7 @@ fn transform_mesh(m: &TriMesh<f64>, at: &Isometry<f64>) -> PyResult<MeshData> {
                 .to_array()
         })
         .collect();
-    MeshData::new(v, m.triangles().to_vec())
+    MeshData::new(v, m.triangles().to_vec(), Some(m.is_solid()))
 }
 
 /// Several bodies moving as one: `parts` is a list of `(body, pose)` with

@@ -22,7 +22,8 @@ create_exception!(
     motion_bound,
     MeshError,
     MotionBoundError,
-    "A triangle mesh the crate cannot use: no triangle, an index out of range, a degenerate mesh."
+    "A triangle mesh the crate cannot use: no triangle, an index out of range, a degenerate mesh, \
+     a mesh declared solid that is not closed and wound outward."
 );
 create_exception!(
     motion_bound,

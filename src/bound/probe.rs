@@ -147,7 +147,7 @@ impl<T: Float> DirectedProbe<T> {
     /// `n/|n|`) at which the motion's rotation centre moves along `n`: the
     /// rate of the support `x(t) . n + rho` of a ball of any radius `rho`
     /// centred on the rotation centre, which the rotation turns in place
-    /// (`proofs/09-ca-toi.md`, Lemma 9.7). What a body turning fast within
+    /// (`proofs/09-ca-toi.md`, Lemma 9.8). What a body turning fast within
     /// such a ball can be stepped by, whatever it turns.
     ///
     /// ```

@@ -74,6 +74,11 @@ pub struct BallTree<T> {
     /// The largest and the median leaf ball radius of `whole`.
     leaf_max: f64,
     leaf_median: f64,
+    /// Whether the mesh is declared solid ([`TriMesh::try_solid`](crate::TriMesh::try_solid)).
+    solid: bool,
+    /// One point of each connected component of the triangles
+    /// (`mesh::component_points`): what is tested inside a solid mesh.
+    pub(crate) probes: Vec<[T; 3]>,
 }
 
 impl<T: Float> BallTree<T> {
@@ -199,6 +204,8 @@ impl<T: Float> BallTree<T> {
             .collect();
         radii.sort_by(f64::total_cmp);
         Ok(Self {
+            solid: false,
+            probes: crate::mesh::component_points(vertices, triangles),
             leaf_max: radii.last().copied().unwrap_or(0.0),
             leaf_median: radii.get(radii.len() / 2).copied().unwrap_or(0.0),
             pieces: PieceCell::new(&whole.leaves, piece_plan),
@@ -227,7 +234,8 @@ impl<T: Float> BallTree<T> {
 }
 
 impl<T: Float> BallTree<T> {
-    /// The hierarchy of a validated mesh (vertices relative to its rotation centre).
+    /// The hierarchy of a validated mesh (vertices relative to its rotation
+    /// centre), solid when the mesh is declared solid.
     ///
     /// # Errors
     /// Only the core's range errors, for a mesh so large that a node radius
@@ -240,7 +248,18 @@ impl<T: Float> BallTree<T> {
     /// assert_eq!(tree.triangle_count(), mesh.triangle_count());
     /// ```
     pub fn try_from_mesh(mesh: &crate::TriMesh<T>) -> Result<Self, InputError> {
-        Self::try_new(mesh.vertices(), mesh.triangles())
+        let mut tree = Self::try_new(mesh.vertices(), mesh.triangles())?;
+        tree.solid = mesh.is_solid();
+        Ok(tree)
+    }
+
+    /// Whether the mesh is solid: built by [`try_from_mesh`](Self::try_from_mesh)
+    /// from a mesh declared solid ([`TriMesh::try_solid`](crate::TriMesh::try_solid));
+    /// a tree built from vertices and triangles is hollow. A body that starts
+    /// inside a solid mesh is in contact with it.
+    #[must_use]
+    pub const fn is_solid(&self) -> bool {
+        self.solid
     }
 
     /// The root's ball: contains the whole mesh.

@@ -66,7 +66,7 @@ impl<T: Float> CaStep<T> for BallPair<T> {
         let kind = params.bound.cheap_kind();
         // A ball centred on its body's rotation centre only translates: its
         // support along n moves at the centre's rate, whatever the body
-        // turns (Lemma 9.7); any other ball at the rate of its points.
+        // turns (Lemma 9.8); any other ball at the rate of its points.
         let centred = |ball: &BoundingBall<T>, m: &PreparedMotion<T>| {
             *ball.centre() == m.motion().local_centre().to_array()
         };

@@ -130,6 +130,36 @@ impl<'a, T: Float, P: PartPair<'a, T>> CaStep<T> for CompoundPair<'a, T, P> {
         self.work
     }
 
+    /// A point of a part inside another body's solid mesh part (Lemma 9.7):
+    /// each pair of parts' own check, the first contact found.
+    fn initial_overlap(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> Option<StepResult<T>> {
+        let mut used = Work::ZERO;
+        for i in 0..self.a.part_count() {
+            for j in 0..self.b.part_count() {
+                let Ok(pair) = P::try_new(self.a.part(i), self.b.part(j)) else {
+                    continue;
+                };
+                let mut pair = pair.with_workspace(core::mem::take(&mut self.ws));
+                let budget = params.work_budget.saturating_sub(used);
+                let r = pair.initial_overlap(t, a, b, &params.with_work_budget(budget));
+                let w = pair.work();
+                used = used.saturating_add(w);
+                self.work = self.work.saturating_add(w);
+                self.ws = pair.into_workspace();
+                if r.is_some() {
+                    return r;
+                }
+            }
+        }
+        None
+    }
+
     fn check_motions(&self, a: &RigidMotion<T>, b: &RigidMotion<T>) -> Result<(), CaError> {
         for i in 0..self.a.part_count() {
             for j in 0..self.b.part_count() {

@@ -273,6 +273,20 @@ impl<T: Float> CaStep<T> for AnyPair<'_, T> {
         self.balls
     }
 
+    fn initial_overlap(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> Option<StepResult<T>> {
+        if self.swapped {
+            self.inner().initial_overlap(t, b, a, params).map(turned)
+        } else {
+            self.inner().initial_overlap(t, a, b, params)
+        }
+    }
+
     fn check_motions(&self, a: &RigidMotion<T>, b: &RigidMotion<T>) -> Result<(), CaError> {
         if self.swapped {
             self.inner_ref().check_motions(b, a)

@@ -92,7 +92,21 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
         // What is left of the query's work budget is this step's.
         let used = stepper.work().saturating_sub(work_before);
         let step_params = params.with_work_budget(params.work_budget.saturating_sub(used));
-        match swept.step(stepper, t, (&pa, &pb), &step_params) {
+        let mut result = swept.step(stepper, t, (&pa, &pb), &step_params);
+        if iterations == 1
+            && matches!(
+                result,
+                StepResult::Advance { .. } | StepResult::PrecisionLimit { .. }
+            )
+        {
+            // A body starting inside a solid mesh (Lemma 9.7).
+            let used = stepper.work().saturating_sub(work_before);
+            let left = params.with_work_budget(params.work_budget.saturating_sub(used));
+            if let Some(r) = stepper.initial_overlap(t, &pa, &pb, &left) {
+                result = r;
+            }
+        }
+        match result {
             StepResult::WorkLimit => {
                 let outcome = CaOutcome::WorkLimit { time: t };
                 return report(outcome, iterations, stepper.work());
@@ -178,7 +192,7 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
     }
 }
 
-/// The balls about both bodies' rotation centres that hold them (Lemma 9.7
+/// The balls about both bodies' rotation centres that hold them (Lemma 9.8
 /// of `proofs/09-ca-toi.md`), and whether the bodies turn faster than they
 /// translate.
 struct Swept<T> {

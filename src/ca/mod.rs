@@ -38,6 +38,9 @@ mod convex_convex;
 mod convex_half_space;
 #[cfg(feature = "alloc")]
 mod mesh;
+// A body starting inside a solid mesh: the mesh steppers' check at the start.
+#[cfg(feature = "alloc")]
+mod solid;
 mod vertex_set_vertex_set;
 
 pub use ball_ball::BallPair;

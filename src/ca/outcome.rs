@@ -43,7 +43,9 @@ impl<T: Float> Witness<T> {
 /// What "contact" means: the bodies' computed distance is at most
 /// [`CaParams::contact_distance`](crate::ca::CaParams::contact_distance). For
 /// meshes the distance is between their surfaces (the triangles): a body
-/// wholly inside a closed mesh is not in contact with it. The reported time
+/// wholly inside a hollow mesh is not in contact with it, while one starting
+/// inside a mesh declared solid ([`TriMesh::try_solid`](crate::TriMesh::try_solid))
+/// is an initial contact (`proofs/09-ca-toi.md`, Lemma 9.7). The reported time
 /// is never later than the first time the surfaces touch (distance 0) under
 /// the exact motions (`proofs/09-ca-toi.md`); conservative advancement steps
 /// towards touching, so it is not necessarily the first time the distance
@@ -93,7 +95,11 @@ pub enum CaOutcome<T> {
         /// Which tolerance declared it.
         criterion: ContactCriterion,
     },
-    /// The bodies are already within the contact distance at the start.
+    /// The bodies are already within the contact distance at the start, or
+    /// one starts inside the other's solid mesh
+    /// ([`TriMesh::try_solid`](crate::TriMesh::try_solid)): then the
+    /// witness has distance `0`, both its points at the point found inside,
+    /// and no normal.
     InitialContact(Contact<T>),
     /// No contact in the interval: a certified step from the last time
     /// reached the interval's end (in exact arithmetic), so the bodies do not
@@ -219,6 +225,17 @@ impl Work {
         Self::new(
             self.node_pairs.saturating_sub(other.node_pairs),
             self.triangle_pairs.saturating_sub(other.triangle_pairs),
+        )
+    }
+
+    /// Each count plus `other`'s, at most `u64::MAX`.
+    #[cfg(feature = "alloc")]
+    #[inline]
+    #[must_use]
+    pub(crate) const fn saturating_add(self, other: Self) -> Self {
+        Self::new(
+            self.node_pairs.saturating_add(other.node_pairs),
+            self.triangle_pairs.saturating_add(other.triangle_pairs),
         )
     }
 

@@ -74,10 +74,31 @@ pub trait CaStep<T: Float> {
         Work::ZERO
     }
 
+    /// An overlap at the query's start that the steps do not measure: a
+    /// body starting inside a solid mesh (`TriMesh::try_solid`,
+    /// `proofs/09-ca-toi.md`, Lemma 9.7). [`time_of_impact`](crate::ca::time_of_impact) asks once per
+    /// query, at its start `t`, after the first step when that step neither
+    /// touched nor ran out of work, with the first step's motions and
+    /// `params` holding what is left of the budget. A result replaces the
+    /// first step's: `Touching` ends the query with
+    /// [`CaOutcome::InitialContact`](crate::ca::CaOutcome::InitialContact), `WorkLimit` with
+    /// [`CaOutcome::WorkLimit`](crate::ca::CaOutcome::WorkLimit). The default finds nothing; a stepper that
+    /// wraps another should forward it.
+    fn initial_overlap(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> Option<StepResult<T>> {
+        let _ = (t, a, b, params);
+        None
+    }
+
     /// Balls, each in its body's frame, that hold the two bodies (`None`
     /// when a body has none: a half-space, or a stepper that does not say).
     /// [`time_of_impact`](crate::ca::time_of_impact) steps the balls about the bodies' rotation centres
-    /// that hold these (Lemma 9.7 of `proofs/09-ca-toi.md`) where the bodies
+    /// that hold these (Lemma 9.8 of `proofs/09-ca-toi.md`) where the bodies
     /// turn faster than they translate: whatever a body turns, it stays in
     /// that ball, which only translates. The default has none.
     fn bounding_balls(&self) -> Option<(BoundingBall<T>, BoundingBall<T>)> {

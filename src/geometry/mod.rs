@@ -17,6 +17,9 @@ mod intersect;
 mod predicates;
 mod scale;
 mod simplex;
+// The exact inside test of closed meshes (solid meshes need `alloc`).
+#[cfg(feature = "alloc")]
+pub(crate) mod winding;
 
 /// Hand-made triangle pairs shared by the unit tests of both intersection
 /// tests (`exact`, the testkit's, and `intersect`, the core's filtered ones

@@ -42,6 +42,26 @@ pub enum MeshError {
     /// A scale factor that is zero, negative or not finite (a negative factor
     /// would mirror the mesh and turn its outward winding inward).
     InvalidScale,
+    /// A mesh declared solid ([`TriMesh::try_solid`](crate::TriMesh::try_solid))
+    /// is not closed: some directed edge is not matched by exactly one
+    /// reverse edge (a hole, a crack, a flipped or doubled triangle, an
+    /// edge shared by more than two triangles), or a triangle repeats a
+    /// vertex index: the counts of
+    /// [`EdgeReport`](crate::EdgeReport).
+    NotClosed {
+        /// Distinct directed edges whose reverse no triangle has.
+        unpaired: usize,
+        /// Extra occurrences of directed edges that occur more than once.
+        repeated: usize,
+        /// Triangles that repeat a vertex index.
+        degenerate_triangles: usize,
+    },
+    /// A mesh declared solid ([`TriMesh::try_solid`](crate::TriMesh::try_solid))
+    /// is closed but wound inward, or encloses nothing: its
+    /// [`signed_volume`](crate::TriMesh::signed_volume) is not positive.
+    /// Reversing every triangle (`[a, b, c]` to `[a, c, b]`) turns an
+    /// inward-wound mesh outward.
+    InsideOut,
     /// An OFF file could not be read.
     Off(OffError),
     /// An OBJ file could not be read.
@@ -129,6 +149,17 @@ impl fmt::Display for MeshError {
                 "triangle {triangle} names vertex {index}, but the mesh has {vertex_count} vertices"
             ),
             Self::InvalidScale => f.write_str("scale factor is not positive and finite"),
+            Self::NotClosed {
+                unpaired,
+                repeated,
+                degenerate_triangles,
+            } => write!(
+                f,
+                "mesh is not closed, so it cannot be solid: {unpaired} unpaired and {repeated} repeated directed edges, {degenerate_triangles} triangles repeating a vertex"
+            ),
+            Self::InsideOut => f.write_str(
+                "mesh is wound inward or encloses nothing (signed volume not positive), so it cannot be solid",
+            ),
             Self::Off(e) => write!(f, "{e}"),
             #[cfg(feature = "obj")]
             Self::Obj(e) => write!(f, "{e}"),

@@ -1,11 +1,13 @@
 //! Triangle meshes for the bodies of a CA time-of-impact engine: an owned,
-//! validated [`TriMesh`], its topology checks, and OFF and STL (and, with
-//! the `obj` feature, OBJ) input.
+//! validated [`TriMesh`], its topology checks, its declaration as a solid
+//! and the exact inside test, and OFF and STL (and, with the `obj` feature,
+//! OBJ) input.
 
 mod error;
 #[cfg(feature = "obj")]
 mod obj;
 mod off;
+mod solid;
 mod stl;
 mod topology;
 mod trimesh;
@@ -13,5 +15,6 @@ mod trimesh;
 #[cfg(feature = "obj")]
 pub use error::ObjError;
 pub use error::{MeshError, OffError, OffErrorKind};
+pub(crate) use topology::component_points;
 pub use topology::EdgeReport;
 pub use trimesh::TriMesh;

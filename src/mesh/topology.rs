@@ -1,4 +1,4 @@
-//! Closedness, orientation and volume of a mesh.
+//! Closedness, orientation, volume and connected components of a mesh.
 //!
 //! A CA time-of-impact engine for non-convex bodies needs its meshes closed
 //! and consistently wound: the inside of the body is then well defined, and
@@ -138,8 +138,70 @@ impl<T: Float> TriMesh<T> {
     }
 }
 
+/// The root of `x` in the forest `parent`, halving the path on the way.
+fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        let up = parent[parent[x as usize] as usize];
+        parent[x as usize] = up;
+        x = up;
+    }
+    x
+}
+
+/// Joins the sets of `a` and `b`; the root is the smaller index, so every
+/// set's root is its least member.
+fn join(parent: &mut [u32], a: u32, b: u32) {
+    let (ra, rb) = (find(parent, a), find(parent, b));
+    if ra != rb {
+        parent[ra.max(rb) as usize] = ra.min(rb);
+    }
+}
+
+/// One point of each connected component of the triangles, as a set of
+/// points: two triangles are connected when they share a vertex index or a
+/// vertex position. The least-indexed vertex of each component, in index
+/// order; vertices that no triangle names are left out, as are indices out
+/// of range. `O(V log V + F)`.
+///
+/// A body made of the triangles is connected within each component, so a
+/// component that does not meet a closed surface lies wholly on one side of
+/// it, the side of its point (`proofs/09-ca-toi.md`, Lemma 9.7).
+pub(crate) fn component_points<T: Float>(
+    vertices: &[[T; 3]],
+    triangles: &[[u32; 3]],
+) -> Vec<[T; 3]> {
+    let n = vertices.len().min(u32::MAX as usize);
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    let mut used = alloc::vec![false; n];
+    for tri in triangles {
+        if tri.iter().any(|&i| i as usize >= n) {
+            continue;
+        }
+        for &i in tri {
+            used[i as usize] = true;
+        }
+        join(&mut parent, tri[0], tri[1]);
+        join(&mut parent, tri[1], tri[2]);
+    }
+    // Vertices at one position are one point of the body: sorted by their
+    // coordinates' bits (`+ 0.0` makes `-0.0` and `0.0` one key).
+    let key = |i: u32| vertices[i as usize].map(|c| (c.to_f64() + 0.0).to_bits());
+    let mut order: Vec<u32> = (0..n as u32).filter(|&i| used[i as usize]).collect();
+    order.sort_unstable_by_key(|&i| key(i));
+    for w in order.windows(2) {
+        if key(w[0]) == key(w[1]) {
+            join(&mut parent, w[0], w[1]);
+        }
+    }
+    (0..n as u32)
+        .filter(|&i| used[i as usize] && find(&mut parent, i) == i)
+        .map(|i| vertices[i as usize])
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
+    use super::component_points;
     use crate::TriMesh;
     use alloc::vec;
 
@@ -181,6 +243,36 @@ mod tests {
         let r = TriMesh::try_new(v, degenerate).unwrap().edge_report();
         assert_eq!(r.degenerate_triangles, 1, "degenerate: {r:?}");
         assert!(!r.is_closed(), "degenerate is not closed");
+    }
+
+    #[test]
+    fn one_point_per_connected_component() {
+        let v = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [5.0, 0.0, 0.0],
+            [6.0, 0.0, 0.0],
+            [5.0, 1.0, 0.0],
+            [9.0, 9.0, 9.0],
+            // At the position of vertex 3: joins its triangle to the second.
+            [5.0, 0.0, 0.0],
+            [5.0, -1.0, 0.0],
+            [4.0, -1.0, -0.0],
+        ];
+        let t = [[0, 1, 2], [3, 4, 5], [7, 8, 9]];
+        assert_eq!(
+            component_points(&v, &t),
+            vec![[0.0, 0.0, 0.0], [5.0, 0.0, 0.0]],
+            "two components; the unused vertex 6 is left out"
+        );
+        let apart = [[0, 1, 2], [3, 4, 5], [8, 9, 6]];
+        assert_eq!(component_points(&v, &apart).len(), 3, "three apart");
+        assert_eq!(
+            component_points(&v, &[[0, 1, 2], [0, 1, 99]]),
+            vec![[0.0, 0.0, 0.0]],
+            "an index out of range is skipped"
+        );
     }
 
     #[test]

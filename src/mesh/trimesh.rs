@@ -18,6 +18,12 @@ use crate::{Float, VertexSet};
 /// closed, outward-wound mesh has a positive
 /// [`signed_volume`](Self::signed_volume).
 ///
+/// **Hollow or solid.** A mesh is hollow by default: as a body it is its
+/// triangles, and a body wholly inside it touches nothing. A closed,
+/// outward-wound mesh may be declared solid ([`try_solid`](Self::try_solid)):
+/// it is then the region it bounds, and a body starting inside it is in
+/// contact.
+///
 /// **Invariants** (checked by [`try_new`](Self::try_new)): at least one
 /// vertex and one triangle; every coordinate finite and at most
 /// [`Float::MAX_INPUT`] in magnitude, as [`VertexSet::try_new`] requires;
@@ -47,6 +53,8 @@ use crate::{Float, VertexSet};
 pub struct TriMesh<T> {
     vertices: Vec<[T; 3]>,
     triangles: Vec<[u32; 3]>,
+    /// Declared solid ([`try_solid`](Self::try_solid)): closed, checked.
+    pub(super) solid: bool,
 }
 
 /// Checks every vertex as [`VertexSet::try_new`] does.
@@ -100,6 +108,7 @@ impl<T: Float> TriMesh<T> {
         Ok(Self {
             vertices,
             triangles,
+            solid: false,
         })
     }
 
@@ -157,7 +166,8 @@ impl<T: Float> TriMesh<T> {
             .unwrap_or([T::ZERO; 3])
     }
 
-    /// The vertices and triangles, giving up the mesh.
+    /// The vertices and triangles, giving up the mesh (and its
+    /// [solid](Self::try_solid) declaration).
     #[must_use]
     pub fn into_parts(self) -> (Vec<[T; 3]>, Vec<[u32; 3]>) {
         (self.vertices, self.triangles)
@@ -345,6 +355,7 @@ impl<T: Float> TriMesh<T> {
         Ok(TriMesh {
             vertices,
             triangles: self.triangles.clone(),
+            solid: self.solid,
         })
     }
 
@@ -355,6 +366,7 @@ impl<T: Float> TriMesh<T> {
         Ok(Self {
             vertices,
             triangles: self.triangles.clone(),
+            solid: self.solid,
         })
     }
 }

@@ -4,8 +4,8 @@
 
 use motion_bound::ca::{Compound, Part, Shape as Ours};
 use motion_bound::{
-    BallTree, Convex, HalfSpace as OurHalfSpace, InputError, Isometry, Point3, RigidMotion,
-    Rotation, TimeInterval, Vec3, VertexSet,
+    BallTree, Convex, HalfSpace as OurHalfSpace, InputError, Isometry, MeshError, Point3,
+    RigidMotion, Rotation, TimeInterval, TriMesh, Vec3, VertexSet,
 };
 
 use super::error::CastError;
@@ -13,7 +13,7 @@ use super::parry;
 use super::swept::Swept;
 use parry::math::{Pose, Real, Vector};
 use parry::query::NonlinearRigidMotion;
-use parry::shape::{Shape, TypedShape};
+use parry::shape::{Shape, TriMeshFlags, TypedShape};
 
 pub(super) fn vec3(v: Vector) -> Vec3<Real> {
     Vec3::new(v.x, v.y, v.z)
@@ -148,7 +148,10 @@ fn kind_name(shape: &dyn Shape) -> &'static str {
 }
 
 /// A tree of parry's mesh, its vertices mapped by `pose` (a compound's
-/// part) when given.
+/// part) when given. A mesh flagged [`TriMeshFlags::ORIENTED`] (parry's
+/// solid mesh) is solid (`TriMesh::try_solid`): a body starting inside it is
+/// in contact; one that is not closed and wound outward is
+/// [`CastError::NotSolid`].
 fn tree(shape: &dyn Shape, pose: Option<&Pose>) -> Result<Option<BallTree<Real>>, CastError> {
     let TypedShape::TriMesh(m) = shape.as_typed_shape() else {
         return Ok(None);
@@ -158,7 +161,22 @@ fn tree(shape: &dyn Shape, pose: Option<&Pose>) -> Result<Option<BallTree<Real>>
         .iter()
         .map(|v| vec3(pose.map_or(*v, |p| *p * *v)).to_array())
         .collect();
-    Ok(Some(BallTree::try_new(&vertices, m.indices())?))
+    if !m.flags().contains(TriMeshFlags::ORIENTED) {
+        return Ok(Some(BallTree::try_new(&vertices, m.indices())?));
+    }
+    let solid = TriMesh::try_new(vertices, m.indices().to_vec())
+        .map_err(|e| match e {
+            MeshError::Vertex(e) => CastError::Input(e),
+            MeshError::IndexOutOfRange {
+                triangle, index, ..
+            } => CastError::Input(InputError::TriangleIndexOutOfRange { triangle, index }),
+            _ => CastError::Input(InputError::NoTriangles),
+        })?
+        .try_solid()
+        .map_err(|e| CastError::NotSolid {
+            closed: !matches!(e, MeshError::NotClosed { .. }),
+        })?;
+    Ok(Some(BallTree::try_from_mesh(&solid)?))
 }
 
 /// One part of a converted body.

@@ -21,6 +21,16 @@ pub enum CastError {
     Ca(CaError),
     /// A NaN or infinite `start_time` or `end_time`.
     Interval,
+    /// A parry `TriMesh` flagged `TriMeshFlags::ORIENTED`, which parry takes
+    /// as the solid it bounds, that `motion-bound` cannot take as solid
+    /// (`TriMesh::try_solid`): not closed (`closed` false: a hole, a crack,
+    /// a flipped or doubled triangle), or closed but wound inward or
+    /// enclosing nothing (`closed` true). A mesh without the flag is a
+    /// surface (hollow), whatever its shape.
+    NotSolid {
+        /// Whether the mesh is closed (then it is wound inward).
+        closed: bool,
+    },
 }
 
 impl fmt::Display for CastError {
@@ -30,6 +40,12 @@ impl fmt::Display for CastError {
             Self::Input(e) => write!(f, "invalid shape or motion: {e}"),
             Self::Ca(e) => write!(f, "conservative advancement: {e}"),
             Self::Interval => f.write_str("start_time and end_time must be finite"),
+            Self::NotSolid { closed: false } => f.write_str(
+                "a TriMesh flagged ORIENTED is solid, but this one is not closed (a hole or a crack)",
+            ),
+            Self::NotSolid { closed: true } => f.write_str(
+                "a TriMesh flagged ORIENTED is solid, but this one is wound inward (negative volume)",
+            ),
         }
     }
 }

@@ -9,8 +9,9 @@ use crate::bvh::{BallTree, Hierarchy};
 use crate::ca::convex_convex::gjk_tolerance;
 use crate::ca::convex_convex::PlacedCore;
 use crate::ca::convex_half_space::check_half_space;
+use crate::ca::solid::StartCheck;
 use crate::ca::step::placement_error;
-use crate::ca::{CaError, CaParams, CaStep, StepResult, Witness, WitnessSearch, Work};
+use crate::ca::{CaError, CaParams, CaStep, Shape, StepResult, Witness, WitnessSearch, Work};
 use crate::geometry::gjk::{gjk_distance, GjkParams};
 use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down, sum_up};
 use crate::{
@@ -62,6 +63,8 @@ pub struct MeshConvexPair<'a, T> {
     other: Other<'a, T>,
     ws: MeshWorkspace<T>,
     stats: TraversalStats,
+    /// A body starting inside a solid mesh (Lemma 9.7).
+    start: StartCheck<'a, T>,
 }
 
 impl<'a, T: Float> MeshConvexPair<'a, T> {
@@ -73,6 +76,7 @@ impl<'a, T: Float> MeshConvexPair<'a, T> {
             other: Other::Shape(shape),
             ws: MeshWorkspace::new(),
             stats: TraversalStats::default(),
+            start: StartCheck::new(Shape::Mesh(mesh), Shape::Convex(shape)),
         }
     }
 
@@ -83,6 +87,7 @@ impl<'a, T: Float> MeshConvexPair<'a, T> {
     pub fn with_half_space(mesh: &'a BallTree<T>, half_space: HalfSpace<T>) -> Self {
         Self {
             other: Other::Plane(half_space),
+            start: StartCheck::new(Shape::Mesh(mesh), Shape::HalfSpace(half_space)),
             ..Self::new(mesh, Convex::point())
         }
     }
@@ -270,7 +275,17 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
     }
 
     fn work(&self) -> Work {
-        self.stats.work()
+        self.stats.work().saturating_add(self.start.work())
+    }
+
+    fn initial_overlap(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> Option<StepResult<T>> {
+        self.start.run(t, a, b, params.work_budget)
     }
 }
 

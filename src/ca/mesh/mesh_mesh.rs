@@ -7,7 +7,8 @@ use super::seeds::Seeds;
 use super::stats::TraversalStats;
 use super::traversal::Descent;
 use crate::bvh::BallTree;
-use crate::ca::{CaError, CaParams, CaStep, MeshParams, StepResult, WitnessSearch, Work};
+use crate::ca::solid::StartCheck;
+use crate::ca::{CaError, CaParams, CaStep, MeshParams, Shape, StepResult, WitnessSearch, Work};
 use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down};
 use crate::{BoundingBall, Direction, Float, PreparedMotion};
 
@@ -44,6 +45,8 @@ pub struct MeshPair<'a, T> {
     ws: MeshWorkspace<T>,
     accept: T,
     closest: Option<(u32, u32)>,
+    /// A body starting inside a solid mesh (Lemma 9.7).
+    start: StartCheck<'a, T>,
 }
 
 impl<'a, T: Float> MeshPair<'a, T> {
@@ -63,6 +66,7 @@ impl<'a, T: Float> MeshPair<'a, T> {
             ws: MeshWorkspace::new(),
             accept: MeshParams::<T>::default().accept_fraction,
             closest: None,
+            start: StartCheck::new(Shape::Mesh(a), Shape::Mesh(b)),
         }
     }
 
@@ -197,7 +201,17 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
     }
 
     fn work(&self) -> Work {
-        self.descent.stats.work()
+        self.descent.stats.work().saturating_add(self.start.work())
+    }
+
+    fn initial_overlap(
+        &mut self,
+        t: T,
+        a: &PreparedMotion<T>,
+        b: &PreparedMotion<T>,
+        params: &CaParams<T>,
+    ) -> Option<StepResult<T>> {
+        self.start.run(t, a, b, params.work_budget)
     }
 }
 
