@@ -3,6 +3,7 @@
 
 use alloc::vec::Vec;
 
+use super::distinct::distinct;
 use super::hierarchy::Hierarchy;
 use super::node::Leaf;
 use super::piece_cell::PieceCell;
@@ -50,11 +51,17 @@ const PIECES_RATIO: f64 = 4.0;
 /// directed bound is computed from, in `O(1)`:
 /// [`DirectedProbe::ball_speed`](crate::DirectedProbe::ball_speed)).
 ///
-/// Built top-down, one triangle per leaf (`2 N - 1` nodes for `N`
-/// triangles): each node is split at the median of whichever of three keys
-/// (centroids along the widest axis or along the box's longest axis,
-/// normals along their principal axis) gives the children the smallest total
-/// box surface. `O(N log^2 N)`: about 0.5 s for 34K triangles here.
+/// Built top-down, one leaf per distinct triangle (`2 M - 1` nodes for `M`
+/// distinct triangles): exact duplicates, the same corners in any order
+/// (from the same or from doubled vertices, a repeated corner counted once),
+/// are one set of points and share the leaf of the first, so a mesh of
+/// 100,000 copies of one triangle is one leaf (`proofs/09-ca-toi.md`,
+/// Lemma 9.2, "Duplicates"). Each node is split at the median position of
+/// whichever of three keys (centroids along the widest axis or along the
+/// box's longest axis, normals along their principal axis) gives the
+/// children the smallest total box surface; keys that tie are split there
+/// too, so the depth is `ceil(log2 M) + 1` whatever the keys.
+/// `O(N log^2 N)`: about 0.5 s for 34K triangles here.
 ///
 /// A mesh with a triangle much longer than its size scale (an edge over
 /// half its reach, as a board's or a box's) also gets a second hierarchy in
@@ -190,7 +197,7 @@ impl<T: Float> BallTree<T> {
             .fold(0.0f64, f64::max);
         let piece_plan =
             (longest > plan.trigger && plan.length > 0.0).then_some((plan.length, plan.budget));
-        let whole = Hierarchy::try_new(leaves, true)?;
+        let whole = Hierarchy::try_new(distinct(leaves), true)?;
         let mut radii: Vec<f64> = whole
             .nodes
             .iter()
@@ -249,11 +256,27 @@ impl<T: Float> BallTree<T> {
         &self.whole.nodes[0].ball
     }
 
-    /// The number of nodes of the hierarchy of whole triangles (`2 N - 1`
-    /// for `N` triangles).
+    /// The number of nodes of the hierarchy of whole triangles (`2 M - 1`
+    /// for `M` distinct triangles).
     #[must_use]
     pub fn node_count(&self) -> usize {
         self.whole.nodes.len()
+    }
+
+    /// The number of distinct triangles, one leaf each: exact duplicates
+    /// (the same corners in any order, a repeated corner counted once) are
+    /// counted once.
+    ///
+    /// ```
+    /// use motion_bound::BallTree;
+    /// let v = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]];
+    /// let tree = BallTree::try_new(&v, &[[0, 1, 2], [2, 0, 3], [0, 1, 1], [1, 0, 3]])?;
+    /// assert_eq!((tree.triangle_count(), tree.distinct_triangle_count()), (4, 2));
+    /// # Ok::<(), motion_bound::InputError>(())
+    /// ```
+    #[must_use]
+    pub fn distinct_triangle_count(&self) -> usize {
+        self.whole.leaves.len()
     }
 
     /// The number of the mesh's triangles.
