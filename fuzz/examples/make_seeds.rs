@@ -4,7 +4,7 @@
 //! `arbitrary`-decoded targets is decoded again (as libFuzzer's
 //! `fuzz_target!` does, with `arbitrary_take_rest`) and compared with the
 //! intended value, so a change of `arbitrary`'s byte format or of the input
-//! types is caught here. The `toi`, `gjk`, `far` and `shapes` targets take raw bytes: their
+//! types is caught here. The `toi`, `gjk`, `far`, `shapes`, `chain` and `degenerate` targets take raw bytes: their
 //! seeds are written as they are.
 
 use std::fmt::Debug;
@@ -90,5 +90,6 @@ fn main() {
     count += write_raw("far", seeds::far_seeds());
     count += write_raw("shapes", seeds::shapes_seeds());
     count += write_raw("chain", seeds::chain_seeds());
+    count += write_raw("degenerate", seeds::degenerate_seeds());
     println!("wrote {count} seeds");
 }

@@ -63,7 +63,7 @@ fn run(data: &[u8]) {
     // bytes), mostly with pieces of a fuzzed coarse length (cheap to build,
     // and every piece certified as the default's are), sometimes without
     // pieces, and one input in 32 with the default tree (its 16,384 pieces
-    // take tens of ms to build when a query takes them).
+    // take tens of ms to build with the tree).
     let tree = |v: &[[f64; 3]], f: &[[u32; 3]]| {
         let length = match data.len() % 32 {
             0 => None,

@@ -735,6 +735,112 @@ pub fn toi_seeds() -> Vec<(String, Vec<u8>)> {
     out
 }
 
+/// Hand-made inputs for the `degenerate` target: the cases (copies
+/// of a triangle of the ball's size, triangles on one point, doubled
+/// vertices, zero-area triangles, a mix under fast spins), each `(kind,
+/// triangles, scale index, base triangles, A's centre, velocity and spin,
+/// B's spin)` against an icosphere of radius 1 (320 triangles).
+#[must_use]
+pub fn degenerate_seeds() -> Vec<(String, Vec<u8>)> {
+    let big = [[0.0, -1.0, -1.0], [0.0, 1.0, -1.0], [0.0, 0.0, 1.0]];
+    let small = [[0.1, 0.2, 0.0], [0.3, -0.1, 0.1], [-0.2, 0.0, 0.3]];
+    let sliver = [[-0.9, 0.0, 0.0], [0.9, 0.0, 0.0], [0.0, 0.0, 0.0]];
+    type Scene = (
+        &'static str,
+        u8,
+        usize,
+        u8,
+        Vec<[[f64; 3]; 3]>,
+        [[f64; 3]; 2],
+        Option<[f64; 3]>,
+        Option<[f64; 3]>,
+    );
+    let head_on = [[-2.5, 0.0, 0.0], [5.0, 0.0, 0.0]];
+    let scenes: Vec<Scene> = vec![
+        (
+            "20000-copies-head-on",
+            0,
+            20_000,
+            0,
+            vec![big],
+            head_on,
+            None,
+            None,
+        ),
+        (
+            "10-copies-a-tenth-spinning",
+            0,
+            10,
+            1,
+            vec![big],
+            head_on,
+            Some([0.0, 15.0, 3.0]),
+            None,
+        ),
+        (
+            "20000-on-one-point",
+            1,
+            20_000,
+            0,
+            vec![small],
+            [[-2.0, 0.3, 0.0], [4.0, 0.0, 0.0]],
+            None,
+            Some([0.0, 0.0, 5.0]),
+        ),
+        (
+            "doubled-vertices",
+            2,
+            20_000,
+            0,
+            vec![big, small, sliver, small],
+            head_on,
+            Some([2.0, 0.0, 0.0]),
+            None,
+        ),
+        (
+            "zero-area",
+            3,
+            30_000,
+            0,
+            vec![sliver, small],
+            [[0.0, -2.5, 0.5], [0.0, 5.0, 0.0]],
+            None,
+            None,
+        ),
+        (
+            "mix-fast-spins",
+            4,
+            5_000,
+            2,
+            vec![big, sliver, small],
+            [[-2.9, 0.5, 0.0], [6.0, 0.0, 0.0]],
+            Some([19.0, -19.0, 10.0]),
+            Some([0.0, 5.0, 0.0]),
+        ),
+    ];
+    let mut out = vec![("empty".to_string(), Vec::new())];
+    for (name, kind, count, scale, base, [centre, velocity], wa, wb) in scenes {
+        let mut e = ToiBytes::default();
+        let k = (count - 1) as u16;
+        e.u8(kind).u8(k.to_le_bytes()[0]).u8(k.to_le_bytes()[1]);
+        e.u8(scale).u8((base.len() - 1) as u8);
+        for tri in &base {
+            for v in tri {
+                e.vector(*v, 1.0);
+            }
+        }
+        // The icosphere: radius 1, subdivided twice.
+        e.value(1.0, 0.1, 1.0).u8(2);
+        e.vector(centre, 3.0)
+            .vector(velocity, 6.0)
+            .spin(wa)
+            .spin(wb);
+        e.u8(0); // the default contact distance
+        out.push((name.to_string(), e.0));
+    }
+    out
+}
+
 /// Seeds of the `gjk` target (raw bytes, as `fuzz_targets/gjk.rs` reads
 /// them): each body is a count byte (`len - 1`) and its coordinates, each a
 /// selector byte, then a grid byte (selector 0: `k / 2 - 1`) or two range

@@ -3,9 +3,10 @@
 
 use alloc::vec::Vec;
 
+use super::distinct::distinct;
 use super::hierarchy::Hierarchy;
 use super::node::Leaf;
-use super::piece_cell::PieceCell;
+use super::piece_hierarchy::build_pieces;
 use super::pieces;
 use crate::{BoundingBall, Float, InputError};
 
@@ -17,8 +18,8 @@ const PIECE_FRACTION: f64 = 1.0 / 32.0;
 /// exceeds this fraction of its reach.
 const PIECE_TRIGGER: f64 = 0.5;
 
-/// The default budget of pieces: this many per triangle, and at least
-/// [`MIN_PIECE_BUDGET`].
+/// The default budget of pieces: this many per distinct triangle, and at
+/// least [`MIN_PIECE_BUDGET`].
 const PIECES_PER_TRIANGLE: usize = 4;
 const MIN_PIECE_BUDGET: usize = 16384;
 
@@ -28,11 +29,13 @@ const PIECE_BUDGET: usize = 1 << 16;
 /// How a tree's hierarchy of pieces is made: it exists when some triangle's
 /// longest edge exceeds `trigger`; every triangle longer than the piece
 /// length is cut down to it, the length being `length` or the least
-/// multiple of it by a power of `sqrt 2` whose pieces fit in `budget`.
+/// multiple of it by a power of `sqrt 2` whose pieces fit in `budget`
+/// (`None`: [`PIECES_PER_TRIANGLE`] per distinct triangle, at least
+/// [`MIN_PIECE_BUDGET`]).
 struct PiecePlan {
     length: f64,
     trigger: f64,
-    budget: usize,
+    budget: Option<usize>,
 }
 
 /// A query uses a mesh's hierarchy of pieces when its largest leaf ball is
@@ -50,26 +53,35 @@ const PIECES_RATIO: f64 = 4.0;
 /// directed bound is computed from, in `O(1)`:
 /// [`DirectedProbe::ball_speed`](crate::DirectedProbe::ball_speed)).
 ///
-/// Built top-down, one triangle per leaf (`2 N - 1` nodes for `N`
-/// triangles): each node is split at the median of whichever of three keys
-/// (centroids along the widest axis or along the box's longest axis,
-/// normals along their principal axis) gives the children the smallest total
-/// box surface. `O(N log^2 N)`: about 0.5 s for 34K triangles here.
+/// Built top-down, one leaf per distinct triangle (`2 M - 1` nodes for `M`
+/// distinct triangles): exact duplicates, the same corners in any order
+/// (from the same or from doubled vertices, a repeated corner counted once),
+/// are one set of points and share the leaf of the first, so a mesh of
+/// 100,000 copies of one triangle is one leaf (`proofs/09-ca-toi.md`,
+/// Lemma 9.2, "Duplicates"). Each node is split at the median position of
+/// whichever of three keys (centroids along the widest axis or along the
+/// box's longest axis, normals along their principal axis) gives the
+/// children the smallest total box surface; keys that tie are split there
+/// too, so the depth is `ceil(log2 M) + 1` whatever the keys.
+/// `O(N log^2 N)`: about 0.5 s for 34K triangles here.
 ///
 /// A mesh with a triangle much longer than its size scale (an edge over
 /// half its reach, as a board's or a box's) also gets a second hierarchy in
 /// which its long triangles are cut into pieces
 /// ([`try_with_piece_length`](Self::try_with_piece_length)); a query takes
 /// it against a mesh of much smaller triangles. That hierarchy splits at the
-/// median of one key (centroids along the widest axis): about 46 ms for
-/// the 13,768 pieces of a 12-triangle board here, paid by the first query
-/// that takes it (with `std`; without, when the tree is built).
+/// median of one key (centroids along the widest axis), over the pieces and
+/// the short triangles together, so that pieces of different triangles near
+/// one another (a thin board's two faces) share nodes. It is built with the
+/// tree (about 34 ms for the 13,768 pieces of a 12-triangle board here), so
+/// that making a pair ([`MeshPair::new`](crate::ca::MeshPair::new)) costs
+/// nothing whatever the meshes.
 #[derive(Clone, Debug)]
 pub struct BallTree<T> {
     /// Every triangle whole.
     pub(crate) whole: Hierarchy<T>,
-    /// Long triangles cut into pieces (`pieces()`), when the mesh has any.
-    pieces: PieceCell<T>,
+    /// Long triangles cut into pieces, when the mesh has any.
+    pieces: Option<Hierarchy<T>>,
     triangles: usize,
     /// The largest and the median leaf ball radius of `whole`.
     leaf_max: f64,
@@ -86,8 +98,10 @@ impl<T: Float> BallTree<T> {
     /// a hierarchy of pieces when its longest edge exceeds half the mesh's
     /// reach (its largest vertex distance from the rotation centre): every
     /// triangle longer than `1/32` of the reach cut to that length, within
-    /// a budget of `max(16,384, 4 N)` pieces (the length coarsened until they
-    /// fit). See [`try_with_piece_length`](Self::try_with_piece_length).
+    /// a budget of `max(16,384, 4 M)` pieces for `M` distinct triangles (the
+    /// length coarsened until they fit; no hierarchy of pieces when no
+    /// triangle is longer than a length that fits). See
+    /// [`try_with_piece_length`](Self::try_with_piece_length).
     ///
     /// # Errors
     /// [`InputError::NoTriangles`] when there is no triangle,
@@ -107,7 +121,7 @@ impl<T: Float> BallTree<T> {
         let plan = PiecePlan {
             length: reach * PIECE_FRACTION,
             trigger: reach * PIECE_TRIGGER,
-            budget: (PIECES_PER_TRIANGLE * triangles.len()).max(MIN_PIECE_BUDGET),
+            budget: None,
         };
         Self::try_build(vertices, triangles, &plan)
     }
@@ -117,7 +131,9 @@ impl<T: Float> BallTree<T> {
     /// which every such triangle is cut into pieces whose edges are at most
     /// `length` (by longest-edge bisection, at most 4,096 pieces a triangle;
     /// if the mesh's pieces would exceed 65,536, the length grows by factors
-    /// `sqrt 2` until they fit). `f64::INFINITY` makes no pieces.
+    /// `sqrt 2` until they fit, and there is no second hierarchy when no
+    /// triangle is longer than a length that fits). `f64::INFINITY` makes no
+    /// pieces.
     ///
     /// A large triangle as one leaf has one volume and one ball, whose
     /// directed bound is that of its farthest point, against every node of
@@ -155,7 +171,7 @@ impl<T: Float> BallTree<T> {
         let plan = PiecePlan {
             length,
             trigger: length,
-            budget: PIECE_BUDGET,
+            budget: Some(PIECE_BUDGET),
         };
         Self::try_build(vertices, triangles, &plan)
     }
@@ -188,14 +204,19 @@ impl<T: Float> BallTree<T> {
             });
         }
         // The hierarchy of pieces exists when some triangle is long enough;
-        // it is built on first use (with `std`) or now.
+        // it is built now, so that pairing the tree costs nothing.
         let longest = leaves
             .iter()
             .map(|l| pieces::longest_edge(&l.corners.map(|c| c.map(T::to_f64))).0)
             .fold(0.0f64, f64::max);
+        let whole = Hierarchy::try_new(distinct(leaves), true)?;
+        let budget = plan.budget.unwrap_or_else(|| {
+            PIECES_PER_TRIANGLE
+                .saturating_mul(whole.leaves.len())
+                .max(MIN_PIECE_BUDGET)
+        });
         let piece_plan =
-            (longest > plan.trigger && plan.length > 0.0).then_some((plan.length, plan.budget));
-        let whole = Hierarchy::try_new(leaves, true)?;
+            (longest > plan.trigger && plan.length > 0.0).then_some((plan.length, budget));
         let mut radii: Vec<f64> = whole
             .nodes
             .iter()
@@ -208,28 +229,20 @@ impl<T: Float> BallTree<T> {
             probes: crate::mesh::component_points(vertices, triangles),
             leaf_max: radii.last().copied().unwrap_or(0.0),
             leaf_median: radii.get(radii.len() / 2).copied().unwrap_or(0.0),
-            pieces: PieceCell::new(&whole.leaves, piece_plan),
+            pieces: piece_plan.and_then(|plan| build_pieces(&whole, plan)),
             whole,
             triangles: triangles.len(),
         })
-    }
-
-    /// The hierarchy of pieces, built on first use, or `None` when the mesh
-    /// has no triangle long enough.
-    fn pieces(&self) -> Option<&Hierarchy<T>> {
-        self.pieces.get(&self.whole.leaves)
     }
 
     /// The hierarchy a query of this mesh against `other` descends: the one
     /// of pieces when this mesh has one and its largest leaf is more than
     /// four times the other's median leaf, else the one of whole triangles.
     pub(crate) fn against(&self, other: &Self) -> &Hierarchy<T> {
-        if self.pieces.plan.is_some() && self.leaf_max > PIECES_RATIO * other.leaf_median {
-            if let Some(p) = self.pieces() {
-                return p;
-            }
+        match &self.pieces {
+            Some(p) if self.leaf_max > PIECES_RATIO * other.leaf_median => p,
+            _ => &self.whole,
         }
-        &self.whole
     }
 }
 
@@ -268,11 +281,27 @@ impl<T: Float> BallTree<T> {
         &self.whole.nodes[0].ball
     }
 
-    /// The number of nodes of the hierarchy of whole triangles (`2 N - 1`
-    /// for `N` triangles).
+    /// The number of nodes of the hierarchy of whole triangles (`2 M - 1`
+    /// for `M` distinct triangles).
     #[must_use]
     pub fn node_count(&self) -> usize {
         self.whole.nodes.len()
+    }
+
+    /// The number of distinct triangles, one leaf each: exact duplicates
+    /// (the same corners in any order, a repeated corner counted once) are
+    /// counted once.
+    ///
+    /// ```
+    /// use motion_bound::BallTree;
+    /// let v = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]];
+    /// let tree = BallTree::try_new(&v, &[[0, 1, 2], [2, 0, 3], [0, 1, 1], [1, 0, 3]])?;
+    /// assert_eq!((tree.triangle_count(), tree.distinct_triangle_count()), (4, 2));
+    /// # Ok::<(), motion_bound::InputError>(())
+    /// ```
+    #[must_use]
+    pub fn distinct_triangle_count(&self) -> usize {
+        self.whole.leaves.len()
     }
 
     /// The number of the mesh's triangles.
@@ -282,12 +311,12 @@ impl<T: Float> BallTree<T> {
     }
 
     /// The number of leaves of the hierarchy of pieces (the pieces, and
-    /// the triangles short enough to stay whole; built now if not yet), or
+    /// the distinct triangles short enough to stay whole), or
     /// `0` when the mesh has no triangle long enough to be cut
     /// ([`try_with_piece_length`](Self::try_with_piece_length)).
     #[must_use]
     pub fn piece_leaf_count(&self) -> usize {
-        self.pieces().map_or(0, |p| p.leaves.len())
+        self.pieces.as_ref().map_or(0, |p| p.leaves.len())
     }
 
     /// The length of the longest root-to-leaf path of the hierarchy of

@@ -99,7 +99,14 @@ impl<T: Float> Hierarchy<T> {
             2
         };
         let long = obb.axes[0].map(T::to_f64);
-        let normals_axis = principal_axes(normal_scatter(leaves, order))[0];
+        // The third key is only tried with `trials`: without, its axis (two
+        // passes and an eigensolve) is not computed.
+        let trying = trials && order.len() >= 4;
+        let normals_axis = if trying {
+            principal_axes(normal_scatter(leaves, order))[0]
+        } else {
+            [0.0; 3]
+        };
         let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
         let keys: [&dyn Fn(u32) -> f64; 3] =
             [&|l| centroid(l)[axis], &|l| dot(centroid(l), long), &|l| {
@@ -112,7 +119,7 @@ impl<T: Float> Hierarchy<T> {
         };
         let mid = order.len() / 2;
         let mut best = (f64::INFINITY, 0);
-        if trials && order.len() >= 4 {
+        if trying {
             let mut trial = order.to_vec();
             for (k, key) in keys.iter().enumerate() {
                 trial.select_nth_unstable_by(mid, |x, y| by(*key, x, y));

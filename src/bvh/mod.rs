@@ -4,17 +4,18 @@
 //!
 //! The files, each importing only from those above it in this list:
 //! `eigen` (principal axes), `oriented_box` (certified boxes), `node` (a
-//! node and a leaf), `pieces` (long triangles cut), `hierarchy` (one
-//! hierarchy and its build), `piece_cell` (the hierarchy of pieces, built
-//! on first use), `ball_tree` ([`BallTree`]) and `vertex_tree`
-//! ([`VertexTree`]).
+//! node and a leaf), `distinct` (one leaf per distinct triangle), `pieces`
+//! (long triangles cut), `hierarchy` (one hierarchy and its build),
+//! `piece_hierarchy` (the hierarchy of pieces), `ball_tree` ([`BallTree`])
+//! and `vertex_tree` ([`VertexTree`]).
 
 mod ball_tree;
+mod distinct;
 mod eigen;
 mod hierarchy;
 mod node;
 mod oriented_box;
-mod piece_cell;
+mod piece_hierarchy;
 mod pieces;
 mod vertex_tree;
 

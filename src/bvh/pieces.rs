@@ -72,14 +72,18 @@ impl<T: Float> Cutter<T> {
     }
 
     /// Visits every piece of the bisection, depth first, until `visit`
-    /// fails.
+    /// fails. The stack holds at most one piece a level and one more.
     fn walk<E>(&self, mut visit: impl FnMut(&[Weights; 3]) -> Result<(), E>) -> Result<(), E> {
-        let mut stack = alloc::vec![(WHOLE, 0u32)];
-        while let Some((ws, level)) = stack.pop() {
+        let mut stack = [(WHOLE, 0u32); MAX_DEPTH as usize + 2];
+        let mut len = 1;
+        while len > 0 {
+            len -= 1;
+            let (ws, level) = stack[len];
             match self.split(&ws, level) {
                 Some((first, second)) => {
-                    stack.push((second, level + 1));
-                    stack.push((first, level + 1));
+                    stack[len] = (second, level + 1);
+                    stack[len + 1] = (first, level + 1);
+                    len += 2;
                 }
                 None => visit(&ws)?,
             }

@@ -4,6 +4,14 @@ use crate::ca::Work;
 
 /// Work counters of a [`MeshPair`](super::MeshPair), summed over every step since the last
 /// [`MeshPair::reset_stats`](super::MeshPair::reset_stats): what a profile of the query needs.
+///
+/// The budget counts `node_pairs` and `triangle_pairs` ([`Work`]), and every other unit of a
+/// step's work is bounded by them: a node pair popped places at most two nodes (each once per
+/// step) and evaluates and queues at most two child pairs, or measures at most one triangle
+/// pair (a leaf pair); the seeds, at most four a step, are triangle pairs; and the rest of a
+/// step (placing both bodies and both roots) is a constant, at most one a step. The trees are
+/// built beforehand ([`BallTree`](crate::BallTree): duplicated triangles share one leaf, long
+/// ones are cut with the tree), so making a pair does no work at all.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct TraversalStats {
