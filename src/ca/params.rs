@@ -168,9 +168,13 @@ impl<T: Float> CaParams<T> {
     /// node pairs), and 0.8 us on 100,000 near copies of one triangle, whose
     /// nodes all overlap so that no pair is pruned and the tree misses the
     /// cache (40 ms; up to 1.2 us and 58 ms with other jobs on the two
-    /// cores). Exact copies share one leaf and cost nothing. Fast spins of
-    /// thin bodies (40 rad per unit time) need up to about 100,000 node
-    /// pairs.
+    /// cores). Exact copies share one leaf and cost nothing. A triangle pair
+    /// against a curved convex shape (a cylinder, a cone: GJK) costs up to
+    /// about 3.5 us, so 10,000 of them about 35 ms. Fast spins against a
+    /// mesh need more: a convex shape and the bunny each turning 200 rad
+    /// over the interval take up to about 25,000 triangle pairs, and one
+    /// such query in five ends in `WorkLimit` (`examples/fast_spins.rs`;
+    /// `docs/performance.md`, "fast spins").
     pub const DEFAULT_WORK_BUDGET: Work = Work::new(50_000, 10_000);
 
     /// With another work budget ([`Work::UNLIMITED`] for none).
