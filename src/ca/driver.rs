@@ -193,13 +193,15 @@ pub fn time_of_impact<T: Float, S: CaStep<T> + ?Sized>(
 }
 
 /// The balls about both bodies' rotation centres that hold them (Lemma 9.8
-/// of `proofs/09-ca-toi.md`), and whether the bodies turn faster than they
-/// translate.
+/// of `proofs/09-ca-toi.md`), and whether the bodies turn much faster than
+/// they translate.
 struct Swept<T> {
     balls: Option<BallPair<T>>,
     /// Step the balls alone: the bodies' turning speeds (`|w| rho`) are at
-    /// least their relative translation speed, so the balls' step, where
-    /// they are apart, is the better one.
+    /// least four times their relative translation speed, so the balls'
+    /// step, where they are apart, is the better one (below that the
+    /// stepper's is taken too, and the longer kept: the factor keeps the
+    /// knots' Table 1 counts, `docs/performance.md`).
     alone: bool,
 }
 
