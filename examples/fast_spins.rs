@@ -107,26 +107,12 @@ struct Opts {
 /// up to the reported time.
 fn run(
     opts: Opts,
-    a: Shape<'static, f64>,
-    ma: &RigidMotion<f64>,
-    b: Shape<'static, f64>,
-    mb: &RigidMotion<f64>,
-    truth: impl Fn(f64, usize) -> Option<f64>,
-    speed: f64,
+    (a, ma): (Shape<'static, f64>, &RigidMotion<f64>),
+    (b, mb): (Shape<'static, f64>, &RigidMotion<f64>),
+    (truth, speed): (impl Fn(f64, usize) -> Option<f64>, f64),
     tally: &mut Tally,
 ) {
-    let mut params = CaParams::default().with_contact_distance(1e-3);
-    if std::env::var_os("FAST_SPINS_UNLIMITED").is_some() {
-        params = params
-            .with_work_budget(motion_bound::ca::Work::UNLIMITED)
-            .with_max_iterations(100_000);
-    }
-    if let Some(h) = std::env::var("FAST_SPINS_HORIZON")
-        .ok()
-        .and_then(|s| s.parse().ok())
-    {
-        params = params.with_horizon_factor(h);
-    }
+    let params = CaParams::default().with_contact_distance(1e-3);
     let start = Instant::now();
     let report = AnyPair::try_new(a, b)
         .and_then(|mut pair| time_of_impact(&mut pair, ma, mb, &params))
@@ -206,7 +192,13 @@ fn main() {
                     let truth = |end: f64, n: usize| {
                         first_sampled_contact(&a.solid, &ma, &b.solid, &mb, (0.0, end), n)
                     };
-                    run(opts, a.shape, &ma, b.shape, &mb, truth, speed, &mut convex);
+                    run(
+                        opts,
+                        (a.shape, &ma),
+                        (b.shape, &mb),
+                        (truth, speed),
+                        &mut convex,
+                    );
                 }
             }
         }
@@ -218,16 +210,8 @@ fn main() {
                 let truth = |end: f64, n: usize| {
                     first_sampled_contact(&kind.solid, &ma, &bunny.solid, &mb, (0.0, end), n)
                 };
-                run(
-                    opts,
-                    kind.shape,
-                    &ma,
-                    bunny.shape,
-                    &mb,
-                    truth,
-                    speed,
-                    &mut mesh,
-                );
+                let (a, b) = ((kind.shape, &ma), (bunny.shape, &mb));
+                run(opts, a, b, (truth, speed), &mut mesh);
             }
         }
         // The bunny thrown at the ground.
@@ -250,16 +234,8 @@ fn main() {
             let truth = |end: f64, n: usize| {
                 first_sampled_landing(&bunny.solid, &ma, &mg, m, (0.0, end), n)
             };
-            run(
-                opts,
-                bunny.shape,
-                &ma,
-                Shape::HalfSpace(ground),
-                &mg,
-                truth,
-                speed,
-                &mut landing,
-            );
+            let (a, b) = ((bunny.shape, &ma), (Shape::HalfSpace(ground), &mg));
+            run(opts, a, b, (truth, speed), &mut landing);
         }
         for (group, t) in [
             ("convex pairs", &convex),

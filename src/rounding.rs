@@ -28,7 +28,6 @@ pub(crate) fn radius_up<T: Float>(max_sq: T) -> T {
 /// points `v_i`, from `max_sq = max_i fl(|fl(v_i - s)|^2)`: the subtraction
 /// errs by at most `u |v_i - s|` per component, so `|v_i - s| <= |fl(v_i - s)| / (1 - u)`,
 /// covered by the extra factor: `radius_up(max_sq) (1 + gamma_2)`.
-#[cfg(feature = "alloc")]
 #[inline]
 #[must_use]
 pub(crate) fn offset_radius_up<T: Float>(max_sq: T) -> T {
