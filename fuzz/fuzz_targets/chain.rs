@@ -890,7 +890,9 @@ fn run(data: &[u8]) {
     }
 
     // Parameters, valid and not.
-    let mut params = ChainParams::default();
+    // Segments anywhere in joint space: the limit check
+    // (`ChainError::BeyondLimits`) is `tests/chain.rs`'s.
+    let mut params = ChainParams::default().with_within_limits(false);
     params.contact_distance = [1e-3, 1e-6, 1e-2, 1e-3][usize::from(b.u8() % 4)];
     params.broad_pieces = [8, 1, 3, 8][usize::from(b.u8() % 4)];
     params.max_iterations = [10_000, 10_000, 10_000, 40][usize::from(b.u8() % 4)];
