@@ -245,8 +245,14 @@ fn a_mesh_pair_reused_across_queries_stays_sound() {
     let (oa, ob) = (oriented(&knot, 2, &mut rng), oriented(&knot, 2, &mut rng));
     let r = reach(&knot);
     let params = CaParams::default().with_contact_distance(1e-3 * 2.0 * r);
+    // Half of them carry the front from step to step (Lemma 9.9): a front
+    // must never leak from one query into the next.
     let mut pairs: Vec<MeshPair<'_, f64>> = (0..4)
-        .map(|k| MeshPair::new(&oa[k % 2].1, &ob[k / 2].1))
+        .map(|k| {
+            MeshPair::new(&oa[k % 2].1, &ob[k / 2].1)
+                .try_with_params(MeshParams::default().with_carry_front(k % 2 == 0))
+                .expect("knobs")
+        })
         .collect();
     let mut tally = Tally::default();
     for k in 0..queries_per_scene(80) {
@@ -287,7 +293,11 @@ fn seeds_shorten_the_descent() {
             PreparedMotion::new(&q.a.restrict(t, 1.0).expect("sub-interval")),
             PreparedMotion::new(&q.b.restrict(t, 1.0).expect("sub-interval")),
         );
-        let mut pair = MeshPair::new(&tree, &tree);
+        // The front off: the second step would otherwise start from the
+        // first one's cut (Lemma 9.9, `tests/front.rs`), not the seeds alone.
+        let mut pair = MeshPair::new(&tree, &tree)
+            .try_with_params(MeshParams::default().with_carry_front(false))
+            .expect("knobs");
         let first = pair.step(t, &a, &b, &params);
         let after_first = pair.stats().node_pairs;
         let second = pair.step(t, &a, &b, &params);

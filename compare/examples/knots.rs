@@ -2,14 +2,15 @@
 //! the crate: time per query and instruction counts.
 //!
 //! ```sh
-//! cargo run --release -p motion-bound-compare --example knots -- [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq]
+//! cargo run --release -p motion-bound-compare --example knots -- [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq] [--front on|off]
 //! ```
 //!
 //! Runs queries `K .. K + N` of the scene of `--queries`'s length (default:
 //! all 200 queries of `table1`), one pass after a warm-up of the first
 //! eight, and prints per size: mean ms per query (the `Instant` around each
 //! query, as `table1` times it), iterations, node pairs, triangle pairs,
-//! contacts and separations. The queries are timed inside
+//! contacts and separations. `--front on` carries the front from step to
+//! step (`MeshParams::carry_front`). The queries are timed inside
 //! `run_queries`, which is never inlined, so that an instruction count can
 //! be limited to them (the trees' builds left out):
 //!
@@ -25,7 +26,7 @@
 use std::process::ExitCode;
 use std::time::Instant;
 
-use motion_bound::ca::{BoundChoice, CaOutcome, CaParams};
+use motion_bound::ca::{BoundChoice, CaOutcome, CaParams, MeshParams};
 #[allow(deprecated)] // The old path, so that this file still builds against older commits.
 use motion_bound::scenes::TorusKnotSize;
 use motion_bound::testkit::table1::{label, KnotScene, SPIN};
@@ -44,11 +45,16 @@ struct Totals {
 
 /// Runs `queries` of `scene` with `params`, timing each.
 #[inline(never)]
-fn run_queries(scene: &KnotScene, skip: usize, params: &CaParams<f64>) -> Totals {
+fn run_queries(
+    scene: &KnotScene,
+    skip: usize,
+    params: &CaParams<f64>,
+    mesh: MeshParams<f64>,
+) -> Totals {
     let mut t = Totals::default();
     for q in scene.queries.iter().skip(skip) {
         let start = Instant::now();
-        let (report, stats) = scene.run(q, params);
+        let (report, stats) = scene.run_with(q, params, mesh);
         t.ms += start.elapsed().as_secs_f64() * 1e3;
         t.queries += 1;
         t.iterations += u64::from(report.iterations);
@@ -66,6 +72,7 @@ fn run_queries(scene: &KnotScene, skip: usize, params: &CaParams<f64>) -> Totals
 fn main() -> ExitCode {
     let mut sizes = TorusKnotSize::ALL.to_vec();
     let (mut queries, mut skip, mut bound) = (200, 0, BoundChoice::Evq);
+    let mut mesh = MeshParams::default();
     let mut it = std::env::args().skip(1);
     while let Some(flag) = it.next() {
         let value = it.next().unwrap_or_default();
@@ -80,9 +87,11 @@ fn main() -> ExitCode {
             "--skip" => skip = value.parse().unwrap_or(0),
             "--bound" if value == "nevq" => bound = BoundChoice::Nevq,
             "--bound" if value == "evq" => bound = BoundChoice::Evq,
+            "--front" if value == "on" => mesh = mesh.with_carry_front(true),
+            "--front" if value == "off" => mesh = mesh.with_carry_front(false),
             _ => {
                 eprintln!(
-                    "usage: knots [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq]"
+                    "usage: knots [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq] [--front on|off]"
                 );
                 return ExitCode::FAILURE;
             }
@@ -96,9 +105,9 @@ fn main() -> ExitCode {
     for size in sizes {
         let scene = KnotScene::new(size, skip + queries, SPIN);
         for q in scene.queries.iter().take(8) {
-            std::hint::black_box(scene.run(q, &params));
+            std::hint::black_box(scene.run_with(q, &params, mesh));
         }
-        let t = run_queries(&scene, skip, &params);
+        let t = run_queries(&scene, skip, &params, mesh);
         let n = t.queries as f64;
         println!(
             "{:>5}: queries {}, mean ms {:.4}, iterations {:.3}, node pairs {:.1}, triangle pairs {:.1}, contacts {}, separated {}",

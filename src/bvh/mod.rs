@@ -22,7 +22,6 @@ mod vertex_tree;
 pub use ball_tree::BallTree;
 pub(crate) use hierarchy::Hierarchy;
 pub(crate) use node::{Leaf, Node};
-// The testkit's containment checks fit boxes directly.
-#[cfg(feature = "testkit")]
+// The mesh steppers' box gaps, and the testkit's containment checks.
 pub(crate) use oriented_box::OrientedBox;
 pub use vertex_tree::VertexTree;

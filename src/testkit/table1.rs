@@ -16,7 +16,9 @@ use std::vec::Vec;
 
 use super::toi::{fly_by, random_rotation, reach, rotate_mesh, FlyBy, Rng};
 use crate::bodies::TorusKnotSize;
-use crate::ca::{time_of_impact, BoundChoice, CaParams, CaReport, MeshPair, TraversalStats};
+use crate::ca::{
+    time_of_impact, BoundChoice, CaParams, CaReport, MeshPair, MeshParams, TraversalStats,
+};
 use crate::{BallTree, TriMesh};
 
 /// The seed of the orientations and the queries (the erratum's date).
@@ -112,7 +114,23 @@ impl KnotScene {
     /// Never for valid parameters.
     #[must_use]
     pub fn run(&self, q: &Query, params: &CaParams<f64>) -> (CaReport<f64>, TraversalStats) {
-        let mut pair = MeshPair::new(&self.trees[q.a], &self.trees[q.b]);
+        self.run_with(q, params, MeshParams::default())
+    }
+
+    /// The same with the traversal's knobs `mesh`.
+    ///
+    /// # Panics
+    /// On knobs out of range ([`MeshParams::validate`]).
+    #[must_use]
+    pub fn run_with(
+        &self,
+        q: &Query,
+        params: &CaParams<f64>,
+        mesh: MeshParams<f64>,
+    ) -> (CaReport<f64>, TraversalStats) {
+        let mut pair = MeshPair::new(&self.trees[q.a], &self.trees[q.b])
+            .try_with_params(mesh)
+            .expect("valid knobs");
         let report =
             time_of_impact(&mut pair, &q.motion.a, &q.motion.b, params).expect("valid query");
         (report, pair.stats())

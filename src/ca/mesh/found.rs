@@ -12,8 +12,11 @@ use crate::{Direction, Float};
 #[derive(Clone, Copy, Debug)]
 pub(super) enum NodeStep<T> {
     /// Certified apart by more than the contact distance, with its safe step;
-    /// `far`: far apart for its size (its step is taken as it is).
-    Apart { step: T, far: bool },
+    /// `far`: far apart for its size (its step is taken as it is); `gap`
+    /// and `rate`: the certified gap the step was made from and the sum of
+    /// both bodies' bounds on its closing speed (what the front needs,
+    /// Lemma 9.9; `rate = +inf` certifies nothing beyond the step's time).
+    Apart { step: T, far: bool, gap: T, rate: T },
     /// Its certified gap (`-inf` when no direction separates the volumes) is
     /// at most the contact distance: it must be split.
     Near(T),
@@ -57,6 +60,8 @@ impl<T: Float> NodeStep<T> {
             Self::Near(_) if limited => Self::Apart {
                 step: T::ZERO,
                 far: false,
+                gap: T::ZERO,
+                rate: T::INFINITY,
             },
             other => other,
         }

@@ -347,6 +347,8 @@ impl<T: Float> MeshConvexPair<'_, T> {
             return NodeStep::Apart {
                 step: T::ZERO,
                 far: false,
+                gap: g,
+                rate: T::INFINITY,
             };
         }
         self.stats.bounds += 2;
@@ -362,6 +364,8 @@ impl<T: Float> MeshConvexPair<'_, T> {
         NodeStep::Apart {
             step: step_down(g, clearance, mu_a, mu_b),
             far,
+            gap: g,
+            rate: mu_a + mu_b,
         }
     }
 

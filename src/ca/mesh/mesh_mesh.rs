@@ -1,9 +1,10 @@
 //! Conservative advancement of two triangle meshes through their ball trees.
 
 use super::found::{Found, Head, NodeStep};
+use super::front::{Carry, FrontEntry};
 use super::placed::{slab_gap, Placed, Rates};
-use super::queue::{MeshWorkspace, Pending, Queued};
-use super::seeds::Seeds;
+use super::queue::{MeshWorkspace, Origin, Pending, Queued};
+use super::seeds::{Seeds, SEEDS};
 use super::stats::TraversalStats;
 use super::traversal::Descent;
 use crate::bvh::BallTree;
@@ -11,6 +12,14 @@ use crate::ca::solid::StartCheck;
 use crate::ca::{CaError, CaParams, CaStep, MeshParams, Shape, StepResult, WitnessSearch, Work};
 use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down};
 use crate::{BoundingBall, Direction, Float, PreparedMotion};
+
+/// What a seed's measurement certified (step, gap, closing rate), when it
+/// certified one.
+type SeedSteps<T> = [Option<(T, T, T)>; SEEDS];
+
+/// A node pair (node of A, node of B) and where its nodes are placed in the
+/// workspace.
+type PlacedPair = ((u32, u32), (u32, u32));
 
 /// Conservative advancement of two non-convex triangle meshes (a
 /// [`CaStep`]): one step is a simultaneous descent of both ball trees.
@@ -35,6 +44,12 @@ use crate::{BoundingBall, Direction, Float, PreparedMotion};
 /// the descent: their steps, usually close to the final one, let it prune
 /// children as they are made (Lemma 9.4; about 10 % fewer node pairs on the
 /// knots). Any seeds are sound, so a pair may be reused across queries.
+///
+/// A step of a query may start from the cut of node pairs the last step
+/// ended with (its front), each keeping the step it certified until that
+/// runs out or it may be within the contact distance, and measure only
+/// those anew (Lemma 9.9, [`MeshParams::carry_front`]): it does when at
+/// least half of the front would keep its step.
 #[derive(Debug)]
 pub struct MeshPair<'a, T> {
     /// The hierarchies descended, with the work counters and the seeds.
@@ -47,6 +62,12 @@ pub struct MeshPair<'a, T> {
     closest: Option<(u32, u32)>,
     /// A body starting inside a solid mesh (Lemma 9.7).
     start: StartCheck<'a, T>,
+    /// Whether steps carry the front, and what the front in the workspace
+    /// is valid for (none: the next step descends from the roots).
+    carry_front: bool,
+    carry: Option<Carry<T>>,
+    /// Whether the front this step is making covers every pair it left.
+    front_ok: bool,
 }
 
 impl<'a, T: Float> MeshPair<'a, T> {
@@ -67,6 +88,9 @@ impl<'a, T: Float> MeshPair<'a, T> {
             accept: MeshParams::<T>::default().accept_fraction,
             closest: None,
             start: StartCheck::new(Shape::Mesh(a), Shape::Mesh(b)),
+            carry_front: MeshParams::<T>::default().carry_front,
+            carry: None,
+            front_ok: false,
         }
     }
 
@@ -96,6 +120,7 @@ impl<'a, T: Float> MeshPair<'a, T> {
     pub(crate) fn with_workspace_from(self, workspace: MeshWorkspace<T>) -> Self {
         Self {
             ws: workspace,
+            carry: None,
             ..self
         }
     }
@@ -120,6 +145,8 @@ impl<'a, T: Float> MeshPair<'a, T> {
         params.validate()?;
         self.accept = params.accept_fraction;
         self.descent.far_ratio = params.far_ratio;
+        self.carry_front = params.carry_front;
+        self.carry = None;
         Ok(self)
     }
 
@@ -192,12 +219,47 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         let mut best = diff_up(b.motion().interval().end(), t);
         let mut found = Found::default();
         self.closest = None;
-        let seeds = self.measure_seeds(&frame, &mut best, &mut found);
-        if !self.descend(&frame, &seeds, &mut best, &mut found) {
+        // The front of the last step, when it is this query's (Lemma 9.9).
+        let motions = (*a.motion(), *b.motion());
+        let key = frame.carry_key();
+        let carry = self.carry.take().filter(|c| {
+            self.carry_front
+                && !frame.limited
+                && c.takes(t, (&motions.0, &motions.1), key, self.ws.front.len())
+        });
+        self.front_ok = self.carry_front && !frame.limited;
+        let pairs_before = self.descent.stats.node_pairs;
+        let (seeds, measured) = self.measure_seeds(&frame, &mut best, &mut found);
+        // Worth carrying only when most of it would keep its step: at least
+        // half its pairs with a step left beyond the seeds' (a choice of
+        // speed only: a fine front measured pair by pair costs more than a
+        // coarse descent, `docs/performance.md`).
+        let carry = carry.filter(|_| {
+            let stale = self.ws.front.iter().filter(|e| e.stale(t, best)).count();
+            2 * stale <= self.ws.front.len()
+        });
+        if !self.descend(
+            &frame,
+            (&seeds, &measured),
+            carry.is_some(),
+            &mut best,
+            &mut found,
+        ) {
             return StepResult::WorkLimit;
         }
         self.closest = found.witness_triangles();
-        found.verdict(best, frame.limited, frame.resolution)
+        let result = found.verdict(best, frame.limited, frame.resolution);
+        if self.front_ok && matches!(result, StepResult::Advance { .. }) {
+            self.ws.swap_fronts();
+            let pairs = self.descent.stats.node_pairs - pairs_before;
+            self.carry = Some(Carry {
+                t,
+                motions,
+                params: key,
+                root_pairs: carry.map_or(pairs, |c| c.root_pairs),
+            });
+        }
+        result
     }
 
     fn work(&self) -> Work {
@@ -217,6 +279,9 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
 
 /// What a step of a [`MeshPair`] fixes before it measures anything.
 struct Frame<'p, T> {
+    /// The step's time, and the end of the interval its bounds hold over.
+    t: T,
+    horizon: T,
     /// Both bodies placed at the step's time.
     pa: Placed<'p, T>,
     pb: Placed<'p, T>,
@@ -254,6 +319,8 @@ impl<'p, T: Float> Frame<'p, T> {
         let clear = params.clearance();
         let resolution = resolution_up(pa.err, pb.err, pa.reach + pb.reach);
         Self {
+            t,
+            horizon: a.motion().interval().end(),
             rates: Rates {
                 kind: params.bound.cheap_kind(),
                 one_sided: params.one_sided,
@@ -269,6 +336,39 @@ impl<'p, T: Float> Frame<'p, T> {
             pb,
         }
     }
+
+    /// The parameters a front's certificates depend on.
+    #[inline]
+    fn carry_key(&self) -> (T, T, crate::BoundKind, bool) {
+        (self.cd, self.clear, self.rates.kind, self.rates.one_sided)
+    }
+
+    /// The front entry of node pair `(i, j)` with its certified `step`,
+    /// `gap` and closing `rate`.
+    #[inline]
+    fn entry(&self, pair: (u32, u32), (step, gap, rate): (T, T, T)) -> FrontEntry {
+        FrontEntry::new(pair, self.t, self.horizon, (step, gap, rate, self.cd))
+    }
+
+    /// The front entry of a queued pair left at the step's end.
+    #[inline]
+    fn pending_entry(&self, p: &Pending) -> FrontEntry {
+        match p.origin {
+            Origin::Carried {
+                deadline,
+                near_from,
+            } => FrontEntry {
+                i: p.i,
+                j: p.j,
+                deadline,
+                near_from,
+            },
+            Origin::Fresh { gap, rate } => self.entry(
+                (p.i, p.j),
+                (T::from_f64(p.key.0), T::from_f64(gap), T::from_f64(rate)),
+            ),
+        }
+    }
 }
 
 impl<T: Float> MeshPair<'_, T> {
@@ -276,11 +376,17 @@ impl<T: Float> MeshPair<'_, T> {
     /// the new time, before the descent: each one's own step is safe for
     /// that pair and, usually close to the final step, lets the descent
     /// prune children as they are made. Returns them, for the descent to
-    /// skip.
+    /// skip, with what each certified.
     #[inline]
-    fn measure_seeds(&mut self, f: &Frame<'_, T>, best: &mut T, found: &mut Found<T>) -> Seeds {
+    fn measure_seeds(
+        &mut self,
+        f: &Frame<'_, T>,
+        best: &mut T,
+        found: &mut Found<T>,
+    ) -> (Seeds, SeedSteps<T>) {
         let seeds = core::mem::take(&mut self.descent.seeds);
-        for &(i, j) in &seeds.pairs[..seeds.len] {
+        let mut measured = [None; SEEDS];
+        for (k, &(i, j)) in seeds.pairs[..seeds.len].iter().enumerate() {
             if self.descent.stats.out_of_work(&f.start, f.budget) {
                 break;
             }
@@ -289,7 +395,7 @@ impl<T: Float> MeshPair<'_, T> {
                 f.pa.corners(&self.descent.a.leaves[i]),
                 f.pb.corners(&self.descent.b.leaves[j]),
             );
-            self.descent.triangle_pair(
+            measured[k] = self.descent.triangle_pair(
                 (&f.pa, &f.pb),
                 (i, j),
                 (&corners.0, &corners.1),
@@ -297,31 +403,56 @@ impl<T: Float> MeshPair<'_, T> {
                 (best, found),
             );
         }
-        seeds
+        (seeds, measured)
     }
 
-    /// The best-first descent of both hierarchies from their roots: node
-    /// pairs popped from the queue until it is empty or [`Found::head`]
-    /// stops the step; a pair far apart for its size settled with its own
-    /// step, a leaf pair measured ([`leaf_pair`](Self::leaf_pair)), any
-    /// other pair split ([`expand`](Self::expand)). `false` when the work
-    /// budget ran out before any contact was found: the step is undecided.
+    /// Hands node pair `pair`, left unsplit with its certified step, gap
+    /// and closing rate `m`, to the front the step is making (when it makes
+    /// one: nothing is computed otherwise).
+    #[inline]
+    fn keep(&mut self, f: &Frame<'_, T>, pair: (u32, u32), m: (T, T, T)) {
+        if self.front_ok {
+            self.ws.next.push(f.entry(pair, m));
+        }
+    }
+
+    /// The best-first descent of both hierarchies: from their roots, or
+    /// from the last step's front (`carried`, Lemma 9.9). Node pairs are
+    /// popped from the queue until it is empty or [`Found::head`] stops the
+    /// step; a carried pair measured anew ([`consider`](Self::consider)), a
+    /// pair far apart for its size settled with its own step, a leaf pair
+    /// measured ([`leaf_pair`](Self::leaf_pair)), any other pair split
+    /// ([`split`](Self::split)) and its children measured. Every pair left unsplit goes to the next
+    /// front. `false` when the work budget ran out before any contact was
+    /// found: the step is undecided.
     #[inline]
     fn descend(
         &mut self,
         f: &Frame<'_, T>,
-        seeds: &Seeds,
+        seeds: (&Seeds, &SeedSteps<T>),
+        carried: bool,
         best: &mut T,
         found: &mut Found<T>,
     ) -> bool {
         self.ws.clear();
-        let roots = (
-            self.ws.placed_slot(0, 0, || f.pa.place(self.descent.a, 0)),
-            self.ws.placed_slot(1, 0, || f.pb.place(self.descent.b, 0)),
-        );
-        let root = NodeStep::Near(-T::INFINITY).resolved(f.limited);
-        self.ws.enqueue(Pending::new(root, (0, 0), roots));
+        self.ws.next.clear();
+        if carried {
+            let front = core::mem::take(&mut self.ws.front);
+            for &e in &front {
+                self.ws.enqueue(Pending::carried(e, f.t));
+            }
+            self.descent.stats.carried += front.len() as u64;
+            self.ws.front = front;
+        } else {
+            let roots = (
+                self.ws.placed_slot(0, 0, || f.pa.place(self.descent.a, 0)),
+                self.ws.placed_slot(1, 0, || f.pb.place(self.descent.b, 0)),
+            );
+            let root = NodeStep::Near(-T::INFINITY).resolved(f.limited);
+            self.ws.enqueue(Pending::new(root, (0, 0), roots));
+        }
         while let Some(Queued { slot, .. }) = self.ws.pop() {
+            let p = self.ws.pending[slot as usize];
             let Pending {
                 near,
                 key,
@@ -329,7 +460,8 @@ impl<T: Float> MeshPair<'_, T> {
                 j,
                 far,
                 at,
-            } = self.ws.pending[slot as usize];
+                origin,
+            } = p;
             let key = T::from_f64(key.0);
             let out_of_work = self.descent.stats.out_of_work(&f.start, f.budget);
             match found.head((near, key), (*best, self.accept), f.first_only, out_of_work) {
@@ -338,57 +470,88 @@ impl<T: Float> MeshPair<'_, T> {
                 Head::Cut => {
                     self.descent.stats.pruned += self.ws.len() as u64 + 1;
                     *best = best.min_nan(key);
+                    // Every pair left keeps its step: the next front.
+                    if self.front_ok {
+                        self.ws.next.push(f.pending_entry(&p));
+                        let mut next = core::mem::take(&mut self.ws.next);
+                        self.ws.drain(|q| next.push(f.pending_entry(q)));
+                        self.ws.next = next;
+                    }
                     break;
                 }
                 Head::OutOfWork => return false,
             }
             self.descent.stats.node_pairs += 1;
-            if far {
+            // The pairs to measure: a carried pair anew, or a split pair's
+            // two children (one call site of the node step, which then
+            // stays inlined in the hot loop).
+            let (pairs, count) = if let Origin::Carried { .. } = origin {
+                // Its carried step is short of the best, or it may be near:
+                // measured anew, as a child would be.
+                self.descent.stats.refreshed += 1;
+                let at = (
+                    self.ws.placed_slot(0, i, || f.pa.place(self.descent.a, i)),
+                    self.ws.placed_slot(1, j, || f.pb.place(self.descent.b, j)),
+                );
+                ([((i, j), at); 2], 1)
+            } else if far {
                 // Splitting a pair this far apart for its size would gain
                 // little: its own step is safe for everything below it.
                 self.descent.stats.settled += 1;
                 *best = best.min_nan(key);
-                continue;
-            }
-            let (na, nb) = (
-                &self.descent.a.nodes[i as usize],
-                &self.descent.b.nodes[j as usize],
-            );
-            match (na.leaf(), nb.leaf()) {
-                (Some(li), Some(lj)) => self.leaf_pair(f, ((li, lj), at), seeds, best, found),
-                (leaf_a, leaf_b) => {
-                    // Descend into the larger ball (a leaf is never split).
-                    let split_a = leaf_b.is_some()
-                        || (leaf_a.is_none() && na.ball.radius() >= nb.ball.radius());
-                    let children = if split_a {
-                        [na.left, na.right]
-                    } else {
-                        [nb.left, nb.right]
-                    };
-                    self.expand(f, ((i, j), at), (split_a, children), *best, found);
+                if self.front_ok {
+                    self.ws.next.push(f.pending_entry(&p));
                 }
-            }
+                continue;
+            } else {
+                let (na, nb) = (
+                    &self.descent.a.nodes[i as usize],
+                    &self.descent.b.nodes[j as usize],
+                );
+                match (na.leaf(), nb.leaf()) {
+                    (Some(li), Some(lj)) => {
+                        self.leaf_pair(f, ((i, j), (li, lj), at), seeds, best, found);
+                        continue;
+                    }
+                    (leaf_a, leaf_b) => {
+                        // Descend into the larger ball (a leaf is never split).
+                        let split_a = leaf_b.is_some()
+                            || (leaf_a.is_none() && na.ball.radius() >= nb.ball.radius());
+                        let children = if split_a {
+                            [na.left, na.right]
+                        } else {
+                            [nb.left, nb.right]
+                        };
+                        (self.split(f, ((i, j), at), (split_a, children)), 2)
+                    }
+                }
+            };
+            self.consider(f, &pairs[..count], *best, found);
         }
         true
     }
 
-    /// A leaf pair popped from the queue (leaves `li` of A and `lj` of B,
-    /// their nodes placed at `at`): skipped when it is a seed (measured
-    /// before the descent: its step is in `best`), pruned when the slab of
-    /// its corners along the line joining the ball centres (Lemma 9.1 holds
-    /// for any direction) shows it no closer than the contact found or,
-    /// before a contact, farther apart than the contact distance with a step
-    /// that reaches `best`; else measured.
+    /// A leaf pair popped from the queue (nodes `i` of A and `j` of B,
+    /// leaves `li` and `lj`, placed at `at`): a seed is not measured again
+    /// (its step is in `best`); else pruned when the slab of its corners
+    /// along the line joining the ball centres (Lemma 9.1 holds for any
+    /// direction) shows it no closer than the contact found or, before a
+    /// contact, farther apart than the contact distance with a step that
+    /// reaches `best`; else measured. Its certified step goes to the front.
     #[inline]
     fn leaf_pair(
         &mut self,
         f: &Frame<'_, T>,
-        ((li, lj), at): ((usize, usize), (u32, u32)),
-        seeds: &Seeds,
+        (pair, (li, lj), at): ((u32, u32), (usize, usize), (u32, u32)),
+        (seeds, measured): (&Seeds, &SeedSteps<T>),
         best: &mut T,
         found: &mut Found<T>,
     ) {
-        if seeds.contains((li as u32, lj as u32)) {
+        if let Some(k) = seeds.position((li as u32, lj as u32)) {
+            match measured[k] {
+                Some(m) => self.keep(f, pair, m),
+                None => self.front_ok = false,
+            }
             return;
         }
         let d = &mut self.descent;
@@ -413,75 +576,127 @@ impl<T: Float> MeshPair<'_, T> {
                 // is pruned when its step reaches the best.
                 d.stats.bounds += 2;
                 let (mu_a, mu_b) = f.rates.leaves(&f.pa, &f.pb, (la, lb), n);
-                if step_down(g, f.clear, mu_a, mu_b) >= *best {
+                let step = step_down(g, f.clear, mu_a, mu_b);
+                if step >= *best {
                     d.stats.pruned += 1;
+                    self.keep(f, pair, (step, g, mu_a + mu_b));
                     return;
                 }
             }
         }
-        d.triangle_pair(
+        let measured = d.triangle_pair(
             (&f.pa, &f.pb),
             (li, lj),
             (&ta, &tb),
             (f.rates, f.cd, f.clear),
             (best, found),
         );
+        match measured {
+            Some(m) => self.keep(f, pair, m),
+            None => self.front_ok = false,
+        }
     }
 
-    /// Splits a node pair (nodes `i` of A and `j` of B, placed at `at`)
-    /// into the pairs of `children` (of A's node when `split_a`, else of
-    /// B's) with the other node, placing each new node once per step (the
-    /// kept one is placed), and queues each child pair whose own step
-    /// ([`Descent::node_step`]) does not prune it ([`Found::queues`]).
+    /// The pairs a node pair (nodes `i` of A and `j` of B, placed at `at`)
+    /// splits into: each of `children` (of A's node when `split_a`, else of
+    /// B's) with the other node, each new node placed once per step (the
+    /// kept one is placed).
     #[inline]
-    fn expand(
+    fn split(
         &mut self,
         f: &Frame<'_, T>,
         ((i, j), at): ((u32, u32), (u32, u32)),
         (split_a, children): (bool, [u32; 2]),
+    ) -> [PlacedPair; 2] {
+        [
+            self.child(f, ((i, j), at), split_a, children[0]),
+            self.child(f, ((i, j), at), split_a, children[1]),
+        ]
+    }
+
+    /// The pair of `child` (of A's node when `split_a`, else of B's) with
+    /// the other node of pair `(i, j)` placed at `at`, the child placed.
+    #[inline(always)]
+    fn child(
+        &mut self,
+        f: &Frame<'_, T>,
+        ((i, j), at): ((u32, u32), (u32, u32)),
+        split_a: bool,
+        child: u32,
+    ) -> PlacedPair {
+        if split_a {
+            let slot = self
+                .ws
+                .placed_slot(0, child, || f.pa.place(self.descent.a, child));
+            ((child, j), (slot, at.1))
+        } else {
+            let slot = self
+                .ws
+                .placed_slot(1, child, || f.pb.place(self.descent.b, child));
+            ((i, child), (at.0, slot))
+        }
+    }
+
+    /// Measures each node pair of `pairs` placed at its `at` (its own
+    /// step, [`Descent::node_step`]) and queues it unless that prunes it
+    /// ([`Found::queues`]); a pruned pair goes to the front with its step.
+    /// (One call site for the node step, which then stays inlined: the hot
+    /// loop.)
+    #[inline(always)]
+    fn consider(
+        &mut self,
+        f: &Frame<'_, T>,
+        pairs: &[PlacedPair],
         best: T,
         found: &Found<T>,
     ) {
-        for child in children {
-            let (pair, at) = if split_a {
-                let slot = self
-                    .ws
-                    .placed_slot(0, child, || f.pa.place(self.descent.a, child));
-                ((child, j), (slot, at.1))
-            } else {
-                let slot = self
-                    .ws
-                    .placed_slot(1, child, || f.pb.place(self.descent.b, child));
-                ((i, child), (at.0, slot))
-            };
-            let q = (self.ws.placed[at.0 as usize], self.ws.placed[at.1 as usize]);
-            // In the search for the closest pair only gaps matter: a
-            // best step of zero skips the directed bounds.
-            // The closest pair's direction separates the volumes near
-            // it best.
-            let (best_step, also) = if found.touching.is_some() {
-                (T::ZERO, found.touching_normal)
-            } else {
-                (best, None)
-            };
-            // Below the resolution no pair is near: one within the
-            // clearance (or unseparated) is a zero step.
-            let near_within = if f.limited { -T::INFINITY } else { f.cd };
-            let step = self
-                .descent
-                .node_step(
-                    &f.pa,
-                    &f.pb,
-                    pair,
-                    q,
-                    (f.rates, near_within, f.clear),
-                    (best_step, also),
-                )
-                .resolved(f.limited);
-            if found.queues(step, best) {
-                self.ws.enqueue(Pending::new(step, pair, at));
-            } else {
-                self.descent.stats.pruned += 1;
+        for &(pair, at) in pairs {
+            self.consider_each(f, (pair, at), best, found);
+        }
+    }
+
+    /// One pair of [`consider`](Self::consider).
+    #[inline(always)]
+    fn consider_each(
+        &mut self,
+        f: &Frame<'_, T>,
+        (pair, at): ((u32, u32), (u32, u32)),
+        best: T,
+        found: &Found<T>,
+    ) {
+        let q = (self.ws.placed[at.0 as usize], self.ws.placed[at.1 as usize]);
+        // In the search for the closest pair only gaps matter: a
+        // best step of zero skips the directed bounds.
+        // The closest pair's direction separates the volumes near
+        // it best.
+        let (best_step, also) = if found.touching.is_some() {
+            (T::ZERO, found.touching_normal)
+        } else {
+            (best, None)
+        };
+        // Below the resolution no pair is near: one within the
+        // clearance (or unseparated) is a zero step.
+        let near_within = if f.limited { -T::INFINITY } else { f.cd };
+        let step = self
+            .descent
+            .node_step(
+                &f.pa,
+                &f.pb,
+                pair,
+                q,
+                (f.rates, near_within, f.clear),
+                (best_step, also),
+            )
+            .resolved(f.limited);
+        if found.queues(step, best) {
+            self.ws.enqueue(Pending::new(step, pair, at));
+        } else {
+            self.descent.stats.pruned += 1;
+            if let NodeStep::Apart {
+                step, gap, rate, ..
+            } = step
+            {
+                self.keep(f, pair, (step, gap, rate));
             }
         }
     }

@@ -5,6 +5,7 @@ use alloc::collections::BinaryHeap;
 use alloc::vec::Vec;
 
 use super::found::NodeStep;
+use super::front::FrontEntry;
 use super::placed::PlacedNode;
 use crate::Float;
 
@@ -56,6 +57,11 @@ pub struct MeshWorkspace<T> {
     seen: Vec<(u32, u32, u32)>,
     /// The current step's stamp (never 0 once a step has begun).
     stamp: u32,
+    /// The front the last step of the pair handed over, and the one this
+    /// step is making (`front`): read only by the pair that made it, while
+    /// its carry holds (a workspace handed to another pair carries none).
+    pub(super) front: Vec<FrontEntry>,
+    pub(super) next: Vec<FrontEntry>,
 }
 
 impl<T: Float> MeshWorkspace<T> {
@@ -69,6 +75,8 @@ impl<T: Float> MeshWorkspace<T> {
             placed: Vec::new(),
             seen: Vec::new(),
             stamp: 0,
+            front: Vec::new(),
+            next: Vec::new(),
         }
     }
 
@@ -88,7 +96,7 @@ impl<T: Float> MeshWorkspace<T> {
 
     /// Where node `node` of body `side` (0 for A, 1 for B) is placed at the
     /// current step, placing it by `place` if no pair of the step has.
-    #[inline]
+    #[inline(always)]
     pub(super) fn placed_slot(
         &mut self,
         side: usize,
@@ -149,6 +157,29 @@ impl<T: Float> MeshWorkspace<T> {
     pub(super) fn len(&self) -> usize {
         self.heap.len() + usize::from(self.held.is_some())
     }
+
+    /// Makes the front being built the front handed over, and empties the
+    /// other for the next step. Both buffers keep the capacity of the
+    /// larger: which one is which alternates from step to step (and from
+    /// pair to pair of a workspace), and a steady loop allocates nothing.
+    pub(super) fn swap_fronts(&mut self) {
+        core::mem::swap(&mut self.front, &mut self.next);
+        self.next.clear();
+        let cap = self.front.capacity().max(self.next.capacity());
+        // Exact: a doubling reserve would outgrow the other buffer at every
+        // swap.
+        self.next.reserve_exact(cap);
+        self.front.reserve_exact(cap - self.front.len());
+    }
+
+    /// Empties the queue, handing each pair left in it to `each` (in no
+    /// particular order).
+    #[inline]
+    pub(super) fn drain(&mut self, mut each: impl FnMut(&Pending)) {
+        for q in self.held.take().into_iter().chain(self.heap.drain()) {
+            each(&self.pending[q.slot as usize]);
+        }
+    }
 }
 
 impl<T: Float> Default for MeshWorkspace<T> {
@@ -183,15 +214,35 @@ pub(super) struct Pending {
     pub(super) j: u32,
     /// The pair is far apart for its size: its step is taken as it is.
     pub(super) far: bool,
-    /// Where the two nodes' placements are in the workspace's `placed`.
+    /// Where the two nodes' placements are in the workspace's `placed`
+    /// (unused for a carried pair: not placed yet).
     pub(super) at: (u32, u32),
+    /// Measured at this step, or carried from the last one.
+    pub(super) origin: Origin,
+}
+
+/// Where a queued pair's key comes from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Origin {
+    /// Measured at this step: the certified gap and closing rate its step
+    /// was made from (`NodeStep::Apart`; zero and `+inf` for a near pair).
+    Fresh { gap: f64, rate: f64 },
+    /// Carried from the last step's front, not measured yet: its key is
+    /// what is left of its certified step (or `-inf`, near, when it may be
+    /// within the contact distance now), and it is measured when popped.
+    Carried { deadline: f64, near_from: f64 },
 }
 
 impl Pending {
     pub(super) fn new<T: Float>(found: NodeStep<T>, (i, j): (u32, u32), at: (u32, u32)) -> Self {
-        let (near, key, far) = match found {
-            NodeStep::Apart { step, far } => (false, step, far),
-            NodeStep::Near(gap) => (true, gap, false),
+        let (near, key, far, gap, rate) = match found {
+            NodeStep::Apart {
+                step,
+                far,
+                gap,
+                rate,
+            } => (false, step, far, gap, rate),
+            NodeStep::Near(gap) => (true, gap, false, T::ZERO, T::INFINITY),
         };
         Self {
             near,
@@ -200,6 +251,38 @@ impl Pending {
             j,
             far,
             at,
+            origin: Origin::Fresh {
+                gap: gap.to_f64(),
+                rate: rate.to_f64(),
+            },
+        }
+    }
+
+    /// The front entry `e` carried to a step at `t`: near (first in the
+    /// queue, key `-inf`) when it may be within the contact distance at `t`
+    /// (`t >= near_from`, which is also the case past its deadline), else
+    /// keyed by what is left of its certified step, `deadline - t` rounded
+    /// down (Lemma 9.9).
+    #[inline]
+    pub(super) fn carried<T: Float>(e: FrontEntry, t: T) -> Self {
+        // Near too when the time is NaN (never: the times are finite).
+        let near = t.to_f64() >= e.near_from || e.near_from.is_nan();
+        let key = if near {
+            f64::NEG_INFINITY
+        } else {
+            crate::rounding::diff_down(T::from_f64(e.deadline), t).to_f64()
+        };
+        Self {
+            near,
+            key: OrdF64(key),
+            i: e.i,
+            j: e.j,
+            far: false,
+            at: (u32::MAX, u32::MAX),
+            origin: Origin::Carried {
+                deadline: e.deadline,
+                near_from: e.near_from,
+            },
         }
     }
 }
@@ -257,7 +340,7 @@ mod tests {
                     let step = if near {
                         NodeStep::Near(f64::from(key))
                     } else {
-                        NodeStep::Apart { step: f64::from(key), far: false }
+                        NodeStep::Apart { step: f64::from(key), far: false, gap: 1.0, rate: 1.0 }
                     };
                     let pair = Pending::new(step, (k as u32, 0), (0, 0));
                     plain.push(Queued { near: pair.near, key: pair.key, slot: ws.pending.len() as u32 });

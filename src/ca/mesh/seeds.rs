@@ -29,8 +29,16 @@ impl Seeds {
         self.len = (self.len + 1).min(SEEDS);
     }
 
-    pub(super) fn contains(&self, pair: (u32, u32)) -> bool {
-        self.pairs[..self.len].contains(&pair)
+    /// Where `pair` is among the seeds.
+    pub(super) fn position(&self, pair: (u32, u32)) -> Option<usize> {
+        let mut k = 0;
+        while k < self.len {
+            if self.pairs[k] == pair {
+                return Some(k);
+            }
+            k += 1;
+        }
+        None
     }
 }
 
@@ -56,7 +64,7 @@ mod tests {
         for (k, want) in sorted.iter().take(SEEDS).enumerate() {
             assert_eq!((s.steps[k], s.pairs[k].0), *want);
         }
-        assert!(s.contains((4, 0)) && !s.contains((2, 0)));
+        assert_eq!((s.position((4, 0)), s.position((2, 0))), (Some(0), None));
         let mut one = Seeds::default();
         one.insert(1.0, (7, 8));
         assert_eq!((one.len, one.pairs[0]), (1, (7, 8)));

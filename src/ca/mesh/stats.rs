@@ -37,6 +37,13 @@ pub struct TraversalStats {
     /// Child node pairs whose volumes no tested direction separates (a zero
     /// safe step): they can only be split.
     pub overlapping: u64,
+    /// Node pairs steps took over from the last step's front
+    /// ([`MeshParams::carry_front`](crate::ca::MeshParams::carry_front)),
+    /// instead of descending from the roots.
+    pub carried: u64,
+    /// Carried node pairs measured anew (each also counted in
+    /// `node_pairs`): the others kept the step the last step certified.
+    pub refreshed: u64,
 }
 
 impl TraversalStats {

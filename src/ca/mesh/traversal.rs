@@ -6,7 +6,7 @@ use super::found::{Found, NodeStep};
 use super::placed::{slab_gap, Placed, PlacedNode, Rates};
 use super::seeds::Seeds;
 use super::stats::TraversalStats;
-use crate::bvh::Hierarchy;
+use crate::bvh::{Hierarchy, OrientedBox};
 use crate::ca::step::gap_step;
 use crate::ca::Witness;
 use crate::geometry::closest::triangle_triangle_vec;
@@ -27,6 +27,22 @@ fn near_points_direction<T: Float>(qa: &PlacedNode<T>, qb: &PlacedNode<T>) -> Op
     let p_b = qb.nearest(p_a);
     let p_a = qa.nearest(p_b);
     Direction::try_new_fast(p_b - p_a).ok()
+}
+
+/// The gap of two placed boxes along `n` (any sign of `n`: the slab between
+/// them is measured along whichever way separates), their centres `d`
+/// apart. Always inlined: it is the node step's inner loop.
+#[inline(always)]
+fn box_gap<T: Float>(
+    d: Vec3<T>,
+    n: Vec3<T>,
+    (pa, pb): (&Placed<'_, T>, &Placed<'_, T>),
+    (oa, ob): (&OrientedBox<T>, &OrientedBox<T>),
+) -> T {
+    let along = d.dot(n).abs();
+    let sa = oa.support_up_with(pa.pose.inverse_transform_vector(n), &pa.box_err);
+    let sb = ob.support_up_with(pb.pose.inverse_transform_vector(n), &pb.box_err);
+    along - sa - sb
 }
 
 /// What the descent of a [`MeshPair`](super::MeshPair) measures and
@@ -71,18 +87,7 @@ impl<T: Float> Descent<'_, T> {
     ) -> NodeStep<T> {
         let (na, nb) = (&self.a.nodes[i as usize], &self.b.nodes[j as usize]);
         let d = qb.centre - qa.centre;
-        // The gap of the boxes along `n` (any sign of `n`: the slab between
-        // them is measured along whichever way separates).
-        let box_gap = |n: Vec3<T>| {
-            let along = d.dot(n).abs();
-            let sa = na
-                .obb
-                .support_up_with(pa.pose.inverse_transform_vector(n), &pa.box_err);
-            let sb = nb
-                .obb
-                .support_up_with(pb.pose.inverse_transform_vector(n), &pb.box_err);
-            along - sa - sb
-        };
+        let box_gap = |n: Vec3<T>| box_gap(d, n, (pa, pb), (&na.obb, &nb.obb));
         let mut best: Option<(T, Direction<T>)> = None;
         let mut consider = |n: Direction<T>, gap: T| {
             if gap > T::ZERO && best.is_none_or(|(g, _)| gap > g) {
@@ -114,20 +119,26 @@ impl<T: Float> Descent<'_, T> {
         let far = gap >= self.far_ratio * (na.ball.radius() + nb.ball.radius());
         // A pair whose step under the crude bound already reaches the best
         // step cannot limit it: no directed bound needed.
-        let lower = step_down(
-            g,
-            clearance,
+        let crude = (
             pa.crude_speed(na.ball.outer_radius_up()),
             pb.crude_speed(nb.ball.outer_radius_up()),
         );
+        let lower = step_down(g, clearance, crude.0, crude.1);
         if lower >= best_step {
-            return NodeStep::Apart { step: lower, far };
+            return NodeStep::Apart {
+                step: lower,
+                far,
+                gap: g,
+                rate: crude.0 + crude.1,
+            };
         }
         self.stats.bounds += 2;
         let (mu_a, mu_b) = rates.balls(pa, pb, (&na.ball, &nb.ball), n);
         NodeStep::Apart {
             step: step_down(g, clearance, mu_a, mu_b),
             far,
+            gap: g,
+            rate: mu_a + mu_b,
         }
     }
 
@@ -135,7 +146,9 @@ impl<T: Float> Descent<'_, T> {
     /// exact distance (a witness, kept in `found` when it is the closest so
     /// far, or the closest within the contact distance) and, when it is
     /// farther apart than the contact distance, its own safe step along its
-    /// closest direction, folded into `best` (Lemma 9.1).
+    /// closest direction, folded into `best` (Lemma 9.1), and returned with
+    /// its certified gap and closing rate (for the front); `None` for a
+    /// contact, or once a contact is found.
     pub(super) fn triangle_pair(
         &mut self,
         (pa, pb): (&Placed<'_, T>, &Placed<'_, T>),
@@ -143,7 +156,7 @@ impl<T: Float> Descent<'_, T> {
         (ta, tb): (&[Vec3<T>; 3], &[Vec3<T>; 3]),
         (rates, contact_distance, clearance): (Rates, T, T),
         (best, found): (&mut T, &mut Found<T>),
-    ) {
+    ) -> Option<(T, T, T)> {
         let (la, lb) = (&self.a.leaves[i], &self.b.leaves[j]);
         self.stats.triangle_pairs += 1;
         let cp = triangle_triangle_vec(ta, tb);
@@ -156,17 +169,16 @@ impl<T: Float> Descent<'_, T> {
         let triangles = Some((la.triangle, lb.triangle));
         // Within the contact distance (or touching: no direction) a
         // contact; else its own step along its closest direction.
-        let Some(n) = found.keep(w, triangles, dir, cp.distance > contact_distance) else {
-            return;
-        };
+        let n = found.keep(w, triangles, dir, cp.distance > contact_distance)?;
         let nv = n.get();
         self.stats.bounds += 2;
         let mu = rates.leaves(pa, pb, (la, lb), n);
         let gap = slab_gap(ta, tb, nv);
         let err = (pa.leaf_err(la), pb.leaf_err(lb));
-        let (step, _) = gap_step(gap, clearance, err, (pa.reach, pb.reach), mu);
+        let (step, g) = gap_step(gap, clearance, err, (pa.reach, pb.reach), mu);
         self.seeds.insert(step.to_f64(), (i as u32, j as u32));
         found.fold(step, n, best);
+        Some((step, g, mu.0 + mu.1))
     }
 }
 
