@@ -149,3 +149,56 @@ fn the_front_gives_the_outcomes_of_the_roots_fast_spins() {
         40,
     );
 }
+
+/// A mesh against convex shapes (`MeshConvexPair`): the same outcomes with
+/// the front as from the roots, contact times within the band between the
+/// clearance and the contact distance, at 6 and 200 rad.
+#[test]
+fn the_front_gives_the_outcomes_of_the_roots_mesh_against_convex() {
+    use motion_bound::ca::MeshConvexPair;
+    use motion_bound::Convex;
+    let ring = torus::<f64>(0.5, 0.12, 24, 8).expect("ring");
+    let tree = BallTree::try_from_mesh(&ring).expect("tree");
+    let shapes = [
+        Convex::try_cylinder(0.2, 0.1).expect("cylinder"),
+        Convex::try_cuboid([0.2, 0.1, 0.15]).expect("box"),
+        Convex::try_cone(0.2, 0.12).expect("cone"),
+    ];
+    let ra = reach(&ring);
+    let rb = 0.3;
+    let params = CaParams::default().with_contact_distance(1e-2 * (ra + rb));
+    let mut rng = Rng::new(20_261_204);
+    let (mut contacts, mut carried, mut refreshed) = (0, 0, 0);
+    for (k, shape) in shapes.iter().enumerate() {
+        let mut with_front = MeshConvexPair::new(&tree, *shape);
+        for q in 0..40 {
+            let spin = if q % 2 == 0 { 6.0 } else { 200.0 };
+            let f = fly_by(&mut rng, ra, rb, spin);
+            let x = time_of_impact(&mut with_front, &f.a, &f.b, &params).expect("valid");
+            let mut roots = MeshConvexPair::new(&tree, *shape).with_carry_front(false);
+            let y = time_of_impact(&mut roots, &f.a, &f.b, &params).expect("valid");
+            let (x, y) = (summary(&x.outcome), summary(&y.outcome));
+            assert!(x.0 < 3 && y.0 < 3, "shape {k}, {q}: undecided {x:?} {y:?}");
+            assert_eq!(x.0, y.0, "shape {k}, {q}: front {x:?}, roots {y:?}");
+            if x.0 == 0 {
+                contacts += 1;
+                assert!(
+                    (x.1 - y.1).abs() <= 1e-2,
+                    "shape {k}, {q}: contact times {} and {}",
+                    x.1,
+                    y.1
+                );
+            }
+        }
+        carried += with_front.stats().carried;
+        refreshed += with_front.stats().refreshed;
+    }
+    println!(
+        "mesh vs convex: {contacts} contacts, {carried} pairs carried, {refreshed} measured anew"
+    );
+    assert!(contacts >= 30, "too few contacts ({contacts})");
+    assert!(
+        carried > 0 && refreshed < carried,
+        "the front was not used ({carried} carried, {refreshed} measured anew)"
+    );
+}

@@ -351,7 +351,9 @@ pub struct MeshParams<T> {
     /// query ended with (its front), each keeping the step it certified
     /// until that runs out, rather than descending from the roots
     /// (`proofs/09-ca-toi.md`, Lemma 9.9); a step takes the front only when
-    /// at least half of it would keep its step. The outcomes are the same
+    /// at least half of it would keep its step. (A mesh against a convex
+    /// shape takes its own switch,
+    /// [`MeshConvexPair::with_carry_front`](crate::ca::MeshConvexPair::with_carry_front).) The outcomes are the same
     /// either way. Default `true`: on Intel Xeon (2026-12-03,
     /// `docs/performance.md`) 6 to 13 % less time on the seed's knot queries
     /// (2.8K to 34K triangles), and up to 5 % more on meshes of a few hundred

@@ -86,6 +86,9 @@ pub(super) struct Carry<T> {
     /// The node pairs the last descent from the roots evaluated: a front
     /// grown past a multiple of it is dropped (`MAX_GROWTH`).
     pub(super) root_pairs: u64,
+    /// The step the step that made the front certified (what a stepper
+    /// without seeds takes as this step's likely length).
+    pub(super) last_step: T,
 }
 
 /// A front of more entries than this many times the node pairs of the last

@@ -2,8 +2,9 @@
 //! half-space: one hierarchy descended against one volume.
 
 use super::found::{Found, Head, NodeStep};
+use super::front::{Carry, FrontEntry};
 use super::placed::{Placed, PlacedNode};
-use super::queue::{MeshWorkspace, Pending, Queued};
+use super::queue::{MeshWorkspace, Origin, Pending, Queued};
 use super::stats::TraversalStats;
 use crate::bvh::{BallTree, Hierarchy};
 use crate::ca::convex_convex::gjk_tolerance;
@@ -11,7 +12,9 @@ use crate::ca::convex_convex::PlacedCore;
 use crate::ca::convex_half_space::check_half_space;
 use crate::ca::solid::StartCheck;
 use crate::ca::step::placement_error;
-use crate::ca::{CaError, CaParams, CaStep, Shape, StepResult, Witness, WitnessSearch, Work};
+use crate::ca::{
+    CaError, CaParams, CaStep, MeshParams, Shape, StepResult, Witness, WitnessSearch, Work,
+};
 use crate::geometry::gjk::{gjk_distance, GjkParams};
 use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down, sum_up};
 use crate::{
@@ -35,7 +38,10 @@ enum Other<'a, T> {
 /// [`CaStep`]: a best-first descent of the mesh's hierarchy against the one
 /// volume, with the same certified gaps, bounds, work budget, precision limit
 /// and closest-pair witness as [`MeshPair`](crate::ca::MeshPair)
-/// (`proofs/12-shapes.md`, Lemma 12.4).
+/// (`proofs/12-shapes.md`, Lemma 12.4), and the same front carried from
+/// step to step (Lemma 9.9, [`with_carry_front`](Self::with_carry_front)):
+/// a step of a query takes the last step's cut of nodes when at most half
+/// of it is stale against the last step's length.
 ///
 /// ```
 /// use motion_bound::ca::{time_of_impact, CaParams, MeshConvexPair};
@@ -65,6 +71,10 @@ pub struct MeshConvexPair<'a, T> {
     stats: TraversalStats,
     /// A body starting inside a solid mesh (Lemma 9.7).
     start: StartCheck<'a, T>,
+    /// Whether steps carry the front (Lemma 9.9), and what the front in the
+    /// workspace is valid for.
+    carry_front: bool,
+    carry: Option<Carry<T>>,
 }
 
 impl<'a, T: Float> MeshConvexPair<'a, T> {
@@ -77,6 +87,8 @@ impl<'a, T: Float> MeshConvexPair<'a, T> {
             ws: MeshWorkspace::new(),
             stats: TraversalStats::default(),
             start: StartCheck::new(Shape::Mesh(mesh), Shape::Convex(shape)),
+            carry_front: MeshParams::<T>::default().carry_front,
+            carry: None,
         }
     }
 
@@ -97,6 +109,17 @@ impl<'a, T: Float> MeshConvexPair<'a, T> {
     #[must_use]
     pub fn with_workspace(mut self, workspace: MeshWorkspace<T>) -> Self {
         self.ws = workspace;
+        self.carry = None;
+        self
+    }
+
+    /// With the front carried from step to step, or not
+    /// ([`MeshParams::carry_front`], on by default: the same outcomes; see
+    /// its docs for what it saves and costs).
+    #[must_use]
+    pub fn with_carry_front(mut self, carry: bool) -> Self {
+        self.carry_front = carry;
+        self.carry = None;
         self
     }
 
@@ -205,14 +228,54 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
         let first_only = params.witness == WitnessSearch::First;
         let (start, budget) = (self.stats, params.work_budget);
         let mut found = Found::default();
+        // The front of the last step, when it is this query's and at most
+        // half of it is stale against the last step's length (Lemma 9.9;
+        // no seeds here to estimate this step's).
+        let motions = (*a.motion(), *b.motion());
+        let key = (cd, clear, kind, params.one_sided);
+        let carry = self.carry.take().filter(|c| {
+            self.carry_front
+                && !limited
+                && c.takes(t, (&motions.0, &motions.1), key, self.ws.front.len())
+                && 2 * self
+                    .ws
+                    .front
+                    .iter()
+                    .filter(|e| e.stale(t, c.last_step))
+                    .count()
+                    <= self.ws.front.len()
+        });
+        let front_ok = self.carry_front && !limited;
+        let mut complete = true;
+        let horizon = a.motion().interval().end();
+        let entry = |pair: u32, (step, gap, rate): (T, T, T)| {
+            FrontEntry::new((pair, 0), t, horizon, (step, gap, rate, cd))
+        };
+        let pairs_before = self.stats.node_pairs;
         self.ws.clear();
-        self.ws.placed.push(pa.place(self.mesh, 0));
-        let root = NodeStep::Near(-T::INFINITY).resolved(limited);
-        self.ws.enqueue(Pending::new(root, (0, 0), (0, 0)));
+        self.ws.next.clear();
+        if carry.is_some() {
+            let front = core::mem::take(&mut self.ws.front);
+            for &e in &front {
+                self.ws.enqueue(Pending::carried(e, t));
+            }
+            self.stats.carried += front.len() as u64;
+            self.ws.front = front;
+        } else {
+            self.ws.placed.push(pa.place(self.mesh, 0));
+            let root = NodeStep::Near(-T::INFINITY).resolved(limited);
+            self.ws.enqueue(Pending::new(root, (0, 0), (0, 0)));
+        }
         while let Some(Queued { slot, .. }) = self.ws.pop() {
+            let p = self.ws.pending[slot as usize];
             let Pending {
-                near, key, i, far, ..
-            } = self.ws.pending[slot as usize];
+                near,
+                key,
+                i,
+                far,
+                origin,
+                ..
+            } = p;
             let key = T::from_f64(key.0);
             let out_of_work = self.stats.out_of_work(&start, budget);
             match found.head((near, key), (best, T::ONE), first_only, out_of_work) {
@@ -221,31 +284,53 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
                 Head::Cut => {
                     self.stats.pruned += self.ws.len() as u64 + 1;
                     best = best.min_nan(key);
+                    // Every node left keeps its step: the next front.
+                    if front_ok {
+                        self.ws.next.push(p.front_entry(t, horizon, cd));
+                        let mut next = core::mem::take(&mut self.ws.next);
+                        self.ws.drain(|q| next.push(q.front_entry(t, horizon, cd)));
+                        self.ws.next = next;
+                    }
                     break;
                 }
                 Head::OutOfWork => return StepResult::WorkLimit,
             }
             self.stats.node_pairs += 1;
-            if far {
+            // The nodes to measure: a carried node anew, or a split node's
+            // two children (one call site of the node step).
+            let (nodes, count) = if let Origin::Carried { .. } = origin {
+                self.stats.refreshed += 1;
+                ([i; 2], 1)
+            } else if far {
                 // Splitting a node this far from B for its size would gain
                 // little: its own step is safe for everything below it
                 // (Lemma 9.2, as `MeshPair`'s settled pairs).
                 self.stats.settled += 1;
                 best = best.min_nan(key);
+                if front_ok {
+                    self.ws.next.push(p.front_entry(t, horizon, cd));
+                }
                 continue;
-            }
-            let node = &self.mesh.nodes[i as usize];
-            if let Some(li) = node.leaf() {
-                self.leaf(
-                    &pa,
-                    &side,
-                    li,
-                    (kind, params.one_sided, cd, clear),
-                    (&mut best, &mut found),
-                );
-                continue;
-            }
-            for child in [node.left, node.right] {
+            } else {
+                let node = &self.mesh.nodes[i as usize];
+                if let Some(li) = node.leaf() {
+                    let measured = self.leaf(
+                        &pa,
+                        &side,
+                        li,
+                        (kind, params.one_sided, cd, clear),
+                        (&mut best, &mut found),
+                    );
+                    match measured {
+                        Some(m) if front_ok => self.ws.next.push(entry(i, m)),
+                        Some(_) => {}
+                        None => complete = false,
+                    }
+                    continue;
+                }
+                ([node.left, node.right], 2)
+            };
+            for &child in &nodes[..count] {
                 let slot = self.ws.placed.len() as u32;
                 self.ws.placed.push(pa.place(self.mesh, child));
                 let q = self.ws.placed[slot as usize];
@@ -268,10 +353,31 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
                     self.ws.enqueue(Pending::new(step, (child, 0), (slot, 0)));
                 } else {
                     self.stats.pruned += 1;
+                    if let (
+                        true,
+                        NodeStep::Apart {
+                            step, gap, rate, ..
+                        },
+                    ) = (front_ok, step)
+                    {
+                        self.ws.next.push(entry(child, (step, gap, rate)));
+                    }
                 }
             }
         }
-        found.verdict(best, limited, resolution)
+        let result = found.verdict(best, limited, resolution);
+        if front_ok && complete && matches!(result, StepResult::Advance { .. }) {
+            self.ws.swap_fronts();
+            let pairs = self.stats.node_pairs - pairs_before;
+            self.carry = Some(Carry {
+                t,
+                motions,
+                params: key,
+                root_pairs: carry.map_or(pairs, |c| c.root_pairs),
+                last_step: best,
+            });
+        }
+        result
     }
 
     fn work(&self) -> Work {
@@ -379,7 +485,7 @@ impl<T: Float> MeshConvexPair<'_, T> {
         li: usize,
         (kind, one_sided, cd, clearance): (BoundKind, bool, T, T),
         (best, found): (&mut T, &mut Found<T>),
-    ) {
+    ) -> Option<(T, T, T)> {
         let leaf = &self.mesh.leaves[li];
         self.stats.triangle_pairs += 1;
         let corners = pa.corners(leaf);
@@ -412,7 +518,7 @@ impl<T: Float> MeshConvexPair<'_, T> {
                     )
                 });
                 let Ok(c) = closest else {
-                    return;
+                    return None;
                 };
                 let (on_a, core) = (c.on_a.to_vec3(), c.on_b.to_vec3());
                 let dir = Direction::try_new(core - on_a);
@@ -426,9 +532,7 @@ impl<T: Float> MeshConvexPair<'_, T> {
             Point3::from_vec3(on_a),
             Point3::from_vec3(on_b),
         );
-        let Some(n) = found.keep(w, None, dir.ok(), distance > cd) else {
-            return;
-        };
+        let n = found.keep(w, None, dir.ok(), distance > cd)?;
         let nv = n.get();
         let upper = corners[0]
             .dot(nv)
@@ -446,7 +550,9 @@ impl<T: Float> MeshConvexPair<'_, T> {
         } else {
             pa.leaf_speed(leaf, n, kind)
         };
-        let step = step_down(g, clearance, mu_a, side.rate(n, kind, one_sided));
+        let mu_b = side.rate(n, kind, one_sided);
+        let step = step_down(g, clearance, mu_a, mu_b);
         found.fold(step, n, best);
+        Some((step, g, mu_a + mu_b))
     }
 }

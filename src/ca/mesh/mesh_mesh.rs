@@ -257,6 +257,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
                 motions,
                 params: key,
                 root_pairs: carry.map_or(pairs, |c| c.root_pairs),
+                last_step: best,
             });
         }
         result
@@ -353,21 +354,7 @@ impl<'p, T: Float> Frame<'p, T> {
     /// The front entry of a queued pair left at the step's end.
     #[inline]
     fn pending_entry(&self, p: &Pending) -> FrontEntry {
-        match p.origin {
-            Origin::Carried {
-                deadline,
-                near_from,
-            } => FrontEntry {
-                i: p.i,
-                j: p.j,
-                deadline,
-                near_from,
-            },
-            Origin::Fresh { gap, rate } => self.entry(
-                (p.i, p.j),
-                (T::from_f64(p.key.0), T::from_f64(gap), T::from_f64(rate)),
-            ),
-        }
+        p.front_entry(self.t, self.horizon, self.cd)
     }
 }
 
@@ -643,13 +630,7 @@ impl<T: Float> MeshPair<'_, T> {
     /// (One call site for the node step, which then stays inlined: the hot
     /// loop.)
     #[inline(always)]
-    fn consider(
-        &mut self,
-        f: &Frame<'_, T>,
-        pairs: &[PlacedPair],
-        best: T,
-        found: &Found<T>,
-    ) {
+    fn consider(&mut self, f: &Frame<'_, T>, pairs: &[PlacedPair], best: T, found: &Found<T>) {
         for &(pair, at) in pairs {
             self.consider_each(f, (pair, at), best, found);
         }

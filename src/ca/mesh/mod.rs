@@ -8,7 +8,7 @@
 //! the leaf pairs handed from step to step (`seeds`), the bodies and nodes
 //! placed at the step's time with their closing rates (`placed`), what a
 //! step finds and the rules both steppers decide by (`found`), the front of
-//! node pairs one step of two meshes hands to the next (`front`), the
+//! node pairs one step hands to the next (`front`), the
 //! best-first queue and the reusable scratch space ([`MeshWorkspace`],
 //! `queue`), and the measurements of the descent of two meshes
 //! (`traversal`).

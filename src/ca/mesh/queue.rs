@@ -258,6 +258,36 @@ impl Pending {
         }
     }
 
+    /// The front entry of this pair, left queued at the end of a step at
+    /// `t` whose bounds hold until `horizon`, with the contact distance
+    /// `cd`: a carried pair's own, or a measured pair's from its step, gap
+    /// and rate (`FrontEntry::new`).
+    #[inline]
+    pub(super) fn front_entry<T: Float>(&self, t: T, horizon: T, cd: T) -> FrontEntry {
+        match self.origin {
+            Origin::Carried {
+                deadline,
+                near_from,
+            } => FrontEntry {
+                i: self.i,
+                j: self.j,
+                deadline,
+                near_from,
+            },
+            Origin::Fresh { gap, rate } => FrontEntry::new(
+                (self.i, self.j),
+                t,
+                horizon,
+                (
+                    T::from_f64(self.key.0),
+                    T::from_f64(gap),
+                    T::from_f64(rate),
+                    cd,
+                ),
+            ),
+        }
+    }
+
     /// The front entry `e` carried to a step at `t`: near (first in the
     /// queue, key `-inf`) when it may be within the contact distance at `t`
     /// (`t >= near_from`, which is also the case past its deadline), else
