@@ -10,17 +10,19 @@ use super::placed::PlacedNode;
 use crate::Float;
 
 /// The scratch space of a [`MeshPair`](super::MeshPair): its best-first
-/// queue and the nodes it placed, kept between steps and queries so that a
-/// query in a steady loop allocates nothing.
+/// queue, the nodes it placed and the front one step hands to the next,
+/// kept between steps and queries so that a query in a steady loop
+/// allocates nothing.
 ///
 /// A `MeshPair` made by [`MeshPair::new`](super::MeshPair::new) owns a fresh
 /// workspace; an engine that runs many pairs per frame keeps one workspace
 /// (per thread) and hands it from pair to pair with
 /// [`MeshPair::with_workspace`](super::MeshPair::with_workspace) and
 /// [`MeshPair::into_workspace`](super::MeshPair::into_workspace). Its
-/// buffers grow to the largest query seen and are then reused; the contents
-/// never carry over (each step clears them), so any workspace is sound for
-/// any pair.
+/// buffers grow to the largest query seen and are then reused. Only the
+/// front carries over, from one step to the next of the same query of the
+/// same pair (`proofs/09-ca-toi.md`, Lemma 9.9); a pair given a workspace
+/// ignores the front in it, so any workspace is sound for any pair.
 ///
 /// ```
 /// use motion_bound::ca::{time_of_impact, CaParams, MeshPair, MeshWorkspace};
