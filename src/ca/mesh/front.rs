@@ -99,6 +99,26 @@ pub(super) const MAX_GROWTH: u64 = 32;
 pub(super) const MIN_FRONT: u64 = 64;
 
 impl<T: Float> Carry<T> {
+    /// What the front made by a step at `t` that certified `step` is valid
+    /// for, the step having evaluated `pairs` node pairs starting from the
+    /// front `previous` describes (or from the roots, `None`).
+    #[inline]
+    pub(super) fn after(
+        previous: Option<Self>,
+        (t, step): (T, T),
+        motions: (RigidMotion<T>, RigidMotion<T>),
+        params: (T, T, crate::BoundKind, bool),
+        pairs: u64,
+    ) -> Self {
+        Self {
+            t,
+            motions,
+            params,
+            root_pairs: previous.map_or(pairs, |c| c.root_pairs),
+            last_step: step,
+        }
+    }
+
     /// Whether a step at `t` of motions `a`, `b` (over any interval) with
     /// `params` may start from the front this carry describes, of `len`
     /// entries.

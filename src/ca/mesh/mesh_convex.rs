@@ -255,12 +255,7 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
         self.ws.clear();
         self.ws.next.clear();
         if carry.is_some() {
-            let front = core::mem::take(&mut self.ws.front);
-            for &e in &front {
-                self.ws.enqueue(Pending::carried(e, t));
-            }
-            self.stats.carried += front.len() as u64;
-            self.ws.front = front;
+            self.stats.carried += self.ws.enqueue_front(t) as u64;
         } else {
             self.ws.placed.push(pa.place(self.mesh, 0));
             let root = NodeStep::Near(-T::INFINITY).resolved(limited);
@@ -286,10 +281,7 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
                     best = best.min_nan(key);
                     // Every node left keeps its step: the next front.
                     if front_ok {
-                        self.ws.next.push(p.front_entry(t, horizon, cd));
-                        let mut next = core::mem::take(&mut self.ws.next);
-                        self.ws.drain(|q| next.push(q.front_entry(t, horizon, cd)));
-                        self.ws.next = next;
+                        self.ws.queue_to_front(&p, (t, horizon, cd));
                     }
                     break;
                 }
@@ -369,13 +361,7 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
         if front_ok && complete && matches!(result, StepResult::Advance { .. }) {
             self.ws.swap_fronts();
             let pairs = self.stats.node_pairs - pairs_before;
-            self.carry = Some(Carry {
-                t,
-                motions,
-                params: key,
-                root_pairs: carry.map_or(pairs, |c| c.root_pairs),
-                last_step: best,
-            });
+            self.carry = Some(Carry::after(carry, (t, best), motions, key, pairs));
         }
         result
     }

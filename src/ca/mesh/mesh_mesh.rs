@@ -252,13 +252,7 @@ impl<T: Float> CaStep<T> for MeshPair<'_, T> {
         if self.front_ok && matches!(result, StepResult::Advance { .. }) {
             self.ws.swap_fronts();
             let pairs = self.descent.stats.node_pairs - pairs_before;
-            self.carry = Some(Carry {
-                t,
-                motions,
-                params: key,
-                root_pairs: carry.map_or(pairs, |c| c.root_pairs),
-                last_step: best,
-            });
+            self.carry = Some(Carry::after(carry, (t, best), motions, key, pairs));
         }
         result
     }
@@ -424,12 +418,7 @@ impl<T: Float> MeshPair<'_, T> {
         self.ws.clear();
         self.ws.next.clear();
         if carried {
-            let front = core::mem::take(&mut self.ws.front);
-            for &e in &front {
-                self.ws.enqueue(Pending::carried(e, f.t));
-            }
-            self.descent.stats.carried += front.len() as u64;
-            self.ws.front = front;
+            self.descent.stats.carried += self.ws.enqueue_front(f.t) as u64;
         } else {
             let roots = (
                 self.ws.placed_slot(0, 0, || f.pa.place(self.descent.a, 0)),
@@ -459,10 +448,7 @@ impl<T: Float> MeshPair<'_, T> {
                     *best = best.min_nan(key);
                     // Every pair left keeps its step: the next front.
                     if self.front_ok {
-                        self.ws.next.push(f.pending_entry(&p));
-                        let mut next = core::mem::take(&mut self.ws.next);
-                        self.ws.drain(|q| next.push(f.pending_entry(q)));
-                        self.ws.next = next;
+                        self.ws.queue_to_front(&p, (f.t, f.horizon, f.cd));
                     }
                     break;
                 }

@@ -174,12 +174,26 @@ impl<T: Float> MeshWorkspace<T> {
         self.front.reserve_exact(cap - self.front.len());
     }
 
-    /// Empties the queue, handing each pair left in it to `each` (in no
-    /// particular order).
-    #[inline]
-    pub(super) fn drain(&mut self, mut each: impl FnMut(&Pending)) {
+    /// Queues every pair of the front the last step handed over, as carried
+    /// to a step at `t` (`Pending::carried`); returns how many.
+    pub(super) fn enqueue_front(&mut self, t: T) -> usize {
+        let front = core::mem::take(&mut self.front);
+        for &e in &front {
+            self.enqueue(Pending::carried(e, t));
+        }
+        let n = front.len();
+        self.front = front;
+        n
+    }
+
+    /// Empties the queue into the front being built, `head` (the pair the
+    /// descent stopped at) first: every pair left keeps its step. `t`,
+    /// `horizon` and `cd` as in [`Pending::front_entry`].
+    pub(super) fn queue_to_front(&mut self, head: &Pending, (t, horizon, cd): (T, T, T)) {
+        self.next.push(head.front_entry(t, horizon, cd));
         for q in self.held.take().into_iter().chain(self.heap.drain()) {
-            each(&self.pending[q.slot as usize]);
+            self.next
+                .push(self.pending[q.slot as usize].front_entry(t, horizon, cd));
         }
     }
 }
