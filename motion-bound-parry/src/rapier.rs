@@ -7,7 +7,11 @@
 //! each other (dimforge/rapier#984); it takes each target at its end-of-step
 //! pose; it ignores a hit at the start of a sub-step; and it clamps a body
 //! along its own interpolation of the motion, not the motion it cast.
-//! [`CertifiedPass`] runs after `PhysicsPipeline::step`: it takes every
+//! It needs no wrapping: plain balls, cuboids, capsules, cylinders, cones,
+//! hulls, meshes and compounds of CCD bodies are all cast (rapier's own
+//! sweeps of balls, boxes and hulls never reach a dispatcher).
+//! [`CertifiedPass`] runs after `PhysicsPipeline::step` ([`CertifiedPass::step`]
+//! does both for a `PhysicsWorld`): it takes every
 //! body's motion over the step from its poses before and after (its centre
 //! of mass on a straight line, its rotation at a constant rate about it),
 //! casts each CCD body's colliders against every other collider whose swept
@@ -43,10 +47,12 @@
 //!     world.insert(rb, ColliderBuilder::ball(0.1));
 //! }
 //! let mut pass = CertifiedPass::new();
+//! // `pass.step(&mut world)` is these three lines.
 //! pass.record(&world.bodies);
 //! world.step();
 //! let clamped = pass.clamp(&mut world.bodies, &world.colliders, world.integration_parameters.dt);
 //! assert_eq!(clamped.bodies, 2);
+//! assert!(pass.dispatcher().stats().certified > 0);
 //! // Both stopped where they touch, not past each other.
 //! let xs: Vec<f64> = world.bodies.iter().map(|(_, b)| b.translation().x).collect();
 //! assert!(xs[0] < xs[1] && xs[1] - xs[0] > 0.2 - 1e-3, "{xs:?}");
@@ -60,8 +66,9 @@ use rapier3d_f64::dynamics::{RigidBodyHandle, RigidBodySet};
 use rapier3d_f64::geometry::ColliderSet;
 use rapier3d_f64::math::Pose;
 use rapier3d_f64::parry::query::NonlinearRigidMotion;
+use rapier3d_f64::pipeline::PhysicsWorld;
 
-use crate::f64::ShapeCache;
+use crate::f64::{CastError, CertifiedDispatcher, ShapeCache, Swept};
 
 /// What one [`CertifiedPass::clamp`] did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -80,10 +87,14 @@ pub struct ClampStats {
 }
 
 /// The certified pass (see the module docs).
+///
+/// Its casts go through a [`CertifiedDispatcher`] (a new one, or the one
+/// given to the narrow phase with [`with_dispatcher`](Self::with_dispatcher)):
+/// its cache, its parameters, and its counters, so that
+/// [`CertifiedDispatcher::stats`] counts the pass's casts with rapier's.
 #[derive(Debug)]
 pub struct CertifiedPass {
-    cache: Arc<ShapeCache>,
-    params: CaParams<f64>,
+    dispatcher: CertifiedDispatcher,
     /// Every body's pose before the step, and whether it is swept (a
     /// dynamic body with CCD enabled).
     before: Vec<(RigidBodyHandle, Pose, bool)>,
@@ -109,29 +120,55 @@ fn collider_motion(
 }
 
 impl CertifiedPass {
-    /// With a new cache and [`CaParams::default`].
+    /// With a new dispatcher (a new cache, [`CaParams::default`]).
     #[must_use]
     pub fn new() -> Self {
         Self {
-            cache: Arc::default(),
-            params: CaParams::default(),
+            dispatcher: CertifiedDispatcher::new(),
             before: Vec::new(),
         }
+    }
+
+    /// Casting through `dispatcher` (a clone of the one given to the narrow
+    /// phase): its cache, its parameters, its counters.
+    #[must_use]
+    pub fn with_dispatcher(mut self, dispatcher: CertifiedDispatcher) -> Self {
+        self.dispatcher = dispatcher;
+        self
     }
 
     /// With the cache `cache` (shared with a `CertifiedDispatcher`).
     #[must_use]
     pub fn with_cache(mut self, cache: Arc<ShapeCache>) -> Self {
-        self.cache = cache;
+        self.dispatcher = self.dispatcher.with_cache(cache);
         self
     }
 
     /// With conservative advancement's parameters (the contact distance
     /// for your length unit).
+    ///
+    /// # Errors
+    /// [`CastError::Ca`] for invalid parameters.
+    pub fn try_with_params(mut self, params: CaParams<f64>) -> Result<Self, CastError> {
+        self.dispatcher = self.dispatcher.try_with_params(params)?;
+        Ok(self)
+    }
+
+    /// The dispatcher the pass casts through (its stats count the pass's
+    /// casts).
     #[must_use]
-    pub fn with_params(mut self, params: CaParams<f64>) -> Self {
-        self.params = params;
-        self
+    pub fn dispatcher(&self) -> &CertifiedDispatcher {
+        &self.dispatcher
+    }
+
+    /// One step of `world` with the pass around it: [`record`](Self::record),
+    /// `world.step()`, [`clamp`](Self::clamp) over
+    /// `world.integration_parameters.dt`. Call it instead of `world.step()`.
+    pub fn step(&mut self, world: &mut PhysicsWorld) -> ClampStats {
+        self.record(&world.bodies);
+        world.step();
+        let dt = world.integration_parameters.dt;
+        self.clamp(&mut world.bodies, &world.colliders, dt)
     }
 
     /// Before `PhysicsPipeline::step`: records every body's pose.
@@ -158,6 +195,7 @@ impl CertifiedPass {
         if dt <= 0.0 {
             return stats;
         }
+        let contact_distance = self.dispatcher.params().contact_distance;
         // Each body's motion over the step, about its centre of mass.
         let motions: Vec<Option<NonlinearRigidMotion>> = self
             .before
@@ -188,7 +226,7 @@ impl CertifiedPass {
             let a = s.compute_aabb(&m.position_at_time(0.0));
             let b = s.compute_aabb(&m.position_at_time(dt));
             let grow = (m.angvel.length() * dt).min(2.0) * reach;
-            a.merged(&b).loosened(grow + self.params.contact_distance)
+            a.merged(&b).loosened(grow + contact_distance)
         };
         let mut hits: Vec<(usize, Option<usize>, f64)> = Vec::new();
         for (i, (hi, _, swept_i)) in self.before.iter().enumerate() {
@@ -218,7 +256,7 @@ impl CertifiedPass {
                         continue;
                     }
                     stats.casts += 1;
-                    match self.cache.cast_shapes_nonlinear(
+                    match self.dispatcher.cast_certified(
                         &m1,
                         ci.shape(),
                         &m2,
@@ -226,7 +264,6 @@ impl CertifiedPass {
                         0.0,
                         dt,
                         true,
-                        &self.params,
                     ) {
                         Ok(Some(hit)) if hit.time_of_impact > 0.0 => {
                             hits.push((i, j, hit.time_of_impact));
@@ -239,16 +276,16 @@ impl CertifiedPass {
                             let depth = |t: f64| {
                                 parry3d_f64::query::contact(
                                     &m1.position_at_time(t),
-                                    ci.shape(),
+                                    Swept::see_through(ci.shape()),
                                     &m2.position_at_time(t),
-                                    cj.shape(),
+                                    Swept::see_through(cj.shape()),
                                     0.0,
                                 )
                                 .ok()
                                 .flatten()
                                 .map_or(0.0, |c| (-c.dist).max(0.0))
                             };
-                            if depth(dt) > depth(0.0) + self.params.contact_distance {
+                            if depth(dt) > depth(0.0) + contact_distance {
                                 stats.held += 1;
                                 hits.push((i, j, 0.0));
                             }

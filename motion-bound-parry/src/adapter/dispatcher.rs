@@ -51,8 +51,12 @@ pub struct DispatchStats {
 /// contacts, distances, casts), so that a collider wrapped to have its CCD
 /// answered here makes the same contacts as unwrapped. Rapier calls
 /// `cast_shapes_nonlinear` only for the pairs its own sweeps do not take
-/// (cylinders, cones, half-spaces, custom shapes such as [`Swept`]): wrap
-/// the colliders whose CCD should be certified.
+/// (cylinders, cones, half-spaces, custom shapes such as [`Swept`]): alone,
+/// it certifies nothing for balls, cuboids, capsules, hulls or meshes. To
+/// certify every CCD body with plain shapes, run `rapier::CertifiedPass`
+/// (feature `rapier`) around each step, made with a clone of this
+/// dispatcher (its casts then counted here too); or wrap the colliders in
+/// [`Swept`] (see its docs for what that costs).
 ///
 /// A clone shares the cache and the counters: keep one to read the stats
 /// of the one given to rapier.
@@ -102,14 +106,55 @@ impl CertifiedDispatcher {
         &self.cache
     }
 
+    /// Conservative advancement's parameters.
+    #[must_use]
+    pub fn params(&self) -> &CaParams<Real> {
+        &self.params
+    }
+
     /// Casts answered and handed over so far, by this dispatcher and its
-    /// clones.
+    /// clones (and by a `rapier::CertifiedPass` made with one of them).
     #[must_use]
     pub fn stats(&self) -> DispatchStats {
         DispatchStats {
             certified: self.counters.certified.load(Ordering::Relaxed),
             handed_to_parry: self.counters.handed_to_parry.load(Ordering::Relaxed),
         }
+    }
+
+    /// The certified cast with this dispatcher's cache and parameters
+    /// ([`ShapeCache::cast_shapes_nonlinear`]), counted in
+    /// [`DispatchStats::certified`] when answered. Unlike the
+    /// [`QueryDispatcher`] method, nothing goes to parry: a pair it cannot
+    /// take is the error (and is not counted). `rapier::CertifiedPass` casts
+    /// through it, so that one dispatcher counts rapier's casts and the
+    /// pass's.
+    ///
+    /// # Errors
+    /// The cast's [`CastError`] (an unsupported shape, an invalid input).
+    #[allow(clippy::too_many_arguments)] // parry's `cast_shapes_nonlinear`'s own.
+    pub fn cast_certified(
+        &self,
+        motion1: &NonlinearRigidMotion,
+        g1: &dyn Shape,
+        motion2: &NonlinearRigidMotion,
+        g2: &dyn Shape,
+        start_time: Real,
+        end_time: Real,
+        stop_at_penetration: bool,
+    ) -> Result<Option<ShapeCastHit>, CastError> {
+        let hit = self.cache.cast_shapes_nonlinear(
+            motion1,
+            g1,
+            motion2,
+            g2,
+            start_time,
+            end_time,
+            stop_at_penetration,
+            &self.params,
+        )?;
+        self.counters.certified.fetch_add(1, Ordering::Relaxed);
+        Ok(hit)
     }
 }
 
@@ -184,7 +229,7 @@ impl QueryDispatcher for CertifiedDispatcher {
         end_time: Real,
         stop_at_penetration: bool,
     ) -> Result<Option<ShapeCastHit>, Unsupported> {
-        match self.cache.cast_shapes_nonlinear(
+        match self.cast_certified(
             motion1,
             g1,
             motion2,
@@ -192,12 +237,8 @@ impl QueryDispatcher for CertifiedDispatcher {
             start_time,
             end_time,
             stop_at_penetration,
-            &self.params,
         ) {
-            Ok(hit) => {
-                self.counters.certified.fetch_add(1, Ordering::Relaxed);
-                Ok(hit)
-            }
+            Ok(hit) => Ok(hit),
             Err(_) => {
                 self.counters
                     .handed_to_parry
