@@ -4,9 +4,10 @@
 
 use std::sync::Arc;
 
+use motion_bound_parry::rapier::CertifiedPass;
 use motion_bound_parry::{CertifiedDispatcher, ShapeCache, Swept};
-use parry3d_f64::math::Vector;
-use parry3d_f64::shape::SharedShape;
+use parry3d_f64::math::{Pose, Vector};
+use parry3d_f64::shape::{ShapeType, SharedShape, TypedShape};
 use rapier3d_f64::prelude::{ColliderBuilder, NarrowPhase, PhysicsWorld, RigidBodyBuilder};
 
 // The example's worlds and checker (its `main` unused here).
@@ -141,7 +142,6 @@ fn two_bullets_do_not_pass_through_each_other_with_the_certified_pass() {
 
 #[test]
 fn shapes_close_but_apart_at_the_start_are_cast_past_it() {
-    use parry3d_f64::math::Pose;
     use parry3d_f64::query::NonlinearRigidMotion;
     // A ball 5e-5 from a wall (within the default contact distance, 1e-4)
     // closing at 1: it touches at 5e-5. Rapier ignores a hit at fraction 0,
@@ -186,4 +186,198 @@ fn shapes_close_but_apart_at_the_start_are_cast_past_it() {
     .expect("a supported pair")
     .expect("a contact");
     assert_eq!(hit.time_of_impact, 0.0, "touching at the start");
+}
+
+/// A world of plain shapes (nothing wrapped): a ball and a spinning cuboid
+/// flung at a thin fixed wall at 300 m/s (5 m a step, the wall 0.02
+/// thick), and two small balls flying head-on at 60 m/s each (1 m apart:
+/// one step carries each through the other). Stepped 30 times with the
+/// dispatcher installed, with or without the certified pass around each
+/// step. Returns the dispatcher's stats and, per step, the bodies'
+/// positions.
+fn plain_world(
+    with_pass: bool,
+) -> (
+    motion_bound_parry::DispatchStats,
+    Vec<Vec<Pose>>,
+    Vec<(SharedShape, Pose)>,
+) {
+    let dispatcher = CertifiedDispatcher::new();
+    let mut w = PhysicsWorld {
+        gravity: Vector::ZERO,
+        narrow_phase: NarrowPhase::with_query_dispatcher(dispatcher.clone()),
+        ..PhysicsWorld::default()
+    };
+    let mut pass = CertifiedPass::new().with_dispatcher(dispatcher.clone());
+    let wall = SharedShape::cuboid(0.01, 3.0, 3.0);
+    let wall_pose = Pose::from_translation(Vector::new(2.0, 0.0, 0.0));
+    w.insert(
+        RigidBodyBuilder::fixed().pose(wall_pose),
+        ColliderBuilder::new(wall.clone()),
+    );
+    let bodies = [
+        (
+            SharedShape::ball(0.1),
+            Vector::new(0.0, -1.0, 0.0),
+            300.0,
+            0.0,
+        ),
+        (
+            SharedShape::cuboid(0.1, 0.1, 0.1),
+            Vector::new(0.0, 1.0, 0.0),
+            300.0,
+            40.0,
+        ),
+        (
+            SharedShape::ball(0.1),
+            Vector::new(-0.5, 0.0, 10.0),
+            60.0,
+            0.0,
+        ),
+        (
+            SharedShape::ball(0.1),
+            Vector::new(0.5, 0.0, 10.0),
+            -60.0,
+            0.0,
+        ),
+    ];
+    let mut handles = Vec::new();
+    for (shape, at, v, spin) in &bodies {
+        let (h, _) = w.insert(
+            RigidBodyBuilder::dynamic()
+                .translation(*at)
+                .linvel(Vector::new(*v, 0.0, 0.0))
+                .angvel(Vector::new(0.0, 0.0, *spin))
+                .ccd_enabled(true),
+            ColliderBuilder::new(shape.clone()),
+        );
+        handles.push(h);
+    }
+    let mut poses = vec![handles.iter().map(|h| *w.bodies[*h].position()).collect()];
+    for _ in 0..30 {
+        if with_pass {
+            pass.step(&mut w);
+        } else {
+            w.step();
+        }
+        poses.push(handles.iter().map(|h| *w.bodies[*h].position()).collect());
+    }
+    let shapes = std::iter::once((wall, wall_pose))
+        .chain(bodies.iter().map(|(s, ..)| (s.clone(), Pose::IDENTITY)))
+        .collect();
+    (dispatcher.stats(), poses, shapes)
+}
+
+/// The independent check of [`plain_world`]'s run, with parry's static
+/// penetration depth on the plain shapes (not the cast): whether a body
+/// ended a step on the far side of the wall, the two balls out of order
+/// (passed through each other), or two shapes deeper than `0.01`.
+fn plain_world_failures(poses: &[Vec<Pose>], shapes: &[(SharedShape, Pose)]) -> Vec<String> {
+    let (wall, wall_pose) = &shapes[0];
+    let mut failures = Vec::new();
+    for (step, p) in poses.iter().enumerate() {
+        for (k, pose) in p[..2].iter().enumerate() {
+            if pose.translation.x > wall_pose.translation.x {
+                failures.push(format!(
+                    "step {step}: body {k} past the wall at {}",
+                    pose.translation.x
+                ));
+            }
+        }
+        if p[2].translation.x >= p[3].translation.x {
+            failures.push(format!(
+                "step {step}: the two balls passed through each other"
+            ));
+        }
+        let mut depth = |a: &Pose, sa: &SharedShape, b: &Pose, sb: &SharedShape, what: &str| {
+            let c = parry3d_f64::query::contact(a, sa.as_ref(), b, sb.as_ref(), 0.0).unwrap();
+            if let Some(c) = c.filter(|c| c.dist < -0.01) {
+                failures.push(format!("step {step}: {what} {} deep", -c.dist));
+            }
+        };
+        for (pose, (shape, _)) in p[..2].iter().zip(&shapes[1..3]) {
+            depth(pose, shape, wall_pose, wall, "a body in the wall");
+        }
+        depth(&p[2], &shapes[3].0, &p[3], &shapes[4].0, "the balls");
+    }
+    failures
+}
+
+#[test]
+fn plain_balls_and_cuboids_are_certified_by_the_pass_without_wrapping() {
+    // The dispatcher alone: rapier sweeps balls and cuboids itself and
+    // casts nothing between two bullets, so it never asks the dispatcher.
+    let (stats, poses, shapes) = plain_world(false);
+    println!("dispatcher alone: {stats:?}");
+    assert_eq!(stats.certified, 0, "rapier asked the dispatcher: {stats:?}");
+    let failures = plain_world_failures(&poses, &shapes);
+    assert!(
+        !failures.is_empty(),
+        "rapier alone passes the check here: the world does not test the pass"
+    );
+    // With the pass, through the same dispatcher: counted, and no body
+    // through the wall nor through another.
+    let (stats, poses, shapes) = plain_world(true);
+    println!("dispatcher and pass: {stats:?}");
+    assert!(
+        stats.certified > 0,
+        "the pass's casts are counted: {stats:?}"
+    );
+    assert_eq!(stats.handed_to_parry, 0, "{stats:?}");
+    let failures = plain_world_failures(&poses, &shapes);
+    assert!(failures.is_empty(), "with the pass: {failures:?}");
+    // The bodies flung at the wall did reach it (stopped there, not
+    // before): their centres came within their reach (0.1 for the ball,
+    // 0.1 * sqrt(3) for the cube) of the wall's face, with a margin.
+    for (k, reach) in [(0, 0.1), (1, 0.1 * 3f64.sqrt())] {
+        let x = poses
+            .iter()
+            .map(|p| p[k].translation.x)
+            .fold(f64::MIN, f64::max);
+        assert!(
+            x > 2.0 - 0.01 - reach - 0.05,
+            "body {k} stopped short, at most at {x}"
+        );
+    }
+}
+
+#[test]
+fn swept_says_custom_and_see_through_answers_as_the_wrapped_shape() {
+    let (vertices, triangles) = parry3d_f64::shape::Ball::new(0.3).to_trimesh(6, 6);
+    let shapes = [
+        SharedShape::ball(0.3),
+        SharedShape::cuboid(0.1, 0.2, 0.3),
+        SharedShape::capsule_y(0.2, 0.1),
+        SharedShape::cylinder(0.2, 0.1),
+        SharedShape::trimesh(vertices, triangles).unwrap(),
+    ];
+    for shape in shapes {
+        let swept = Swept::shared(shape.clone());
+        // What a wrapper can answer: rapier's choice of sweep reads the
+        // kind, and `as_ball()` and the like downcast the concrete type.
+        assert_eq!(swept.shape_type(), ShapeType::Custom);
+        assert!(matches!(swept.as_typed_shape(), TypedShape::Custom(_)));
+        assert!(swept.as_ball().is_none() && swept.as_cuboid().is_none());
+        // Everything else is the inner shape's, and `see_through` gives it.
+        let seen = Swept::see_through(swept.as_ref());
+        assert_eq!(seen.shape_type(), shape.shape_type());
+        assert_eq!(
+            seen.as_ball().map(|b| b.radius),
+            shape.as_ball().map(|b| b.radius)
+        );
+        assert_eq!(
+            seen.as_cuboid().map(|c| c.half_extents),
+            shape.as_cuboid().map(|c| c.half_extents)
+        );
+        assert_eq!(
+            seen.as_capsule().map(|c| c.radius),
+            shape.as_capsule().map(|c| c.radius)
+        );
+        assert_eq!(
+            seen.as_cylinder().map(|c| c.half_height),
+            shape.as_cylinder().map(|c| c.half_height)
+        );
+        assert_eq!(seen.as_trimesh().is_some(), shape.as_trimesh().is_some());
+        assert_eq!(swept.compute_local_aabb(), shape.compute_local_aabb());
+    }
 }
