@@ -2,7 +2,7 @@
 //! cast, in five stress worlds, judged by an independent checker.
 //!
 //! ```text
-//! cargo run --release -p motion-bound-parry --example rapier_worlds -- --launches 20
+//! cargo run --release -p motion-bound-parry --features rapier --example rapier_worlds -- --launches 20
 //! ```
 //!
 //! Each world is launched `--launches` times (default 20; each launch a
@@ -12,12 +12,16 @@
 //!
 //! - **default**: rapier's narrow phase with parry's dispatcher, plain
 //!   shapes;
-//! - **ours**: the narrow phase with [`CertifiedDispatcher`], every dynamic
-//!   collider's shape wrapped in [`Swept`] (fixed ones plain), so that
-//!   rapier hands all CCD pairs of the dynamic bodies to the certified cast,
-//!   and [`CertifiedPass`] after each step (the bodies' actual motions over
-//!   the step, cast pairwise, moved back to the earliest time of impact;
-//!   its time is counted in the step's).
+//! - **ours**: the README's setup: the narrow phase with
+//!   [`CertifiedDispatcher`], plain shapes (nothing wrapped), and
+//!   [`CertifiedPass`] around each step, made with the dispatcher (the
+//!   bodies' actual motions over the step, cast pairwise, moved back to the
+//!   earliest time of impact; its time is counted in the step's).
+//!
+//! With `--swept`, a third run per world (a `swept` line): the same with
+//! every dynamic collider's shape wrapped in [`Swept`] (fixed ones plain),
+//! so that rapier's own CCD also hands the dynamic bodies' pairs to the
+//! certified cast.
 //!
 //! The worlds:
 //!
@@ -167,10 +171,14 @@ impl World {
 pub(crate) enum Mode {
     /// Parry's dispatcher, plain shapes.
     Default,
-    /// [`CertifiedDispatcher`], plain shapes.
+    /// [`CertifiedDispatcher`], plain shapes, no pass.
     Installed,
-    /// [`CertifiedDispatcher`], dynamic colliders wrapped in [`Swept`].
+    /// [`CertifiedDispatcher`] and [`CertifiedPass`], plain shapes (the
+    /// README's setup).
     Ours,
+    /// [`CertifiedDispatcher`] and [`CertifiedPass`], dynamic colliders
+    /// wrapped in [`Swept`].
+    Swept,
 }
 
 /// A thin fixed obstacle: its local normal axis and half extents, for the
@@ -523,7 +531,7 @@ fn make_world(
                 .angvel(s.angvel)
                 .ccd_enabled(true)
                 .can_sleep(false);
-            let shape = if mode == Mode::Ours {
+            let shape = if mode == Mode::Swept {
                 Swept::shared(s.shape.clone())
             } else {
                 s.shape.clone()
@@ -549,7 +557,7 @@ pub(crate) fn run_world(
     verbose: bool,
 ) -> Tally {
     let dispatcher = CertifiedDispatcher::new();
-    let mut pass = CertifiedPass::new().with_cache(dispatcher.cache().clone());
+    let mut pass = CertifiedPass::new().with_dispatcher(dispatcher.clone());
     let mut t = Tally::default();
     for seed in 0..launches {
         let specs = build(world, seed);
@@ -559,14 +567,12 @@ pub(crate) fn run_world(
         for step in 0..steps {
             let before: Vec<Pose> = hs.iter().map(|h| *w.bodies[*h].position()).collect();
             let t0 = Instant::now();
-            if mode == Mode::Ours {
-                pass.record(&w.bodies);
-            }
-            w.step();
-            if mode == Mode::Ours {
-                let c = pass.clamp(&mut w.bodies, &w.colliders, DT);
+            if matches!(mode, Mode::Ours | Mode::Swept) {
+                let c = pass.step(&mut w);
                 t.pass_casts += c.casts;
                 t.pass_clamped += c.bodies;
+            } else {
+                w.step();
             }
             t.step_secs += t0.elapsed().as_secs_f64();
             t.steps += 1;
@@ -606,11 +612,13 @@ pub(crate) fn run_world(
 }
 
 fn main() {
-    let mut args =
-        Args::from_env("rapier_worlds [--launches 20] [--steps 150] [--world NAME] [--verbose]");
+    let mut args = Args::from_env(
+        "rapier_worlds [--launches 20] [--steps 150] [--world NAME] [--verbose] [--swept]",
+    );
     let launches: u64 = args.value_or("--launches", 20);
     let steps: usize = args.value_or("--steps", STEPS);
     let verbose = args.flag("--verbose");
+    let with_swept = args.flag("--swept");
     let only: Option<String> = args.value("--world");
     args.finish();
     println!(
@@ -635,6 +643,17 @@ fn main() {
             d.ms_per_step(),
             o.ms_per_step(),
         );
+        if with_swept {
+            let s = run_world(world, Mode::Swept, launches, steps, true, verbose);
+            println!(
+                "swept {}: tunnelled {}, late {}, ms per step {:.4}, dispatcher certified casts {}",
+                world.name(),
+                s.tunnelled,
+                s.late,
+                s.ms_per_step(),
+                s.stats.certified,
+            );
+        }
         stats.push((world, o.stats, o.pass_casts, o.pass_clamped));
     }
     for (world, s, casts, clamped) in stats {
