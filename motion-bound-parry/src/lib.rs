@@ -12,12 +12,18 @@
 //! - [`ShapeCache`]: shapes converted once (a mesh's tree built once per
 //!   shared shape), and the same cast through them.
 //! - [`CertifiedDispatcher`]: a query dispatcher for rapier's narrow phase
-//!   whose `cast_shapes_nonlinear` is the certified one, and [`Swept`], a
-//!   collider shape wrapper with which rapier hands every CCD pair of that
-//!   collider to it (rapier's own proxy sweeps take the rest otherwise).
-//! - `rapier::CertifiedPass` (feature `rapier`): a certified pass after
-//!   rapier's step over the bodies' actual motions, for what rapier's CCD
-//!   never asks (two bullets) or does with a time (its own clamping path).
+//!   whose `cast_shapes_nonlinear` is the certified one. Rapier asks it
+//!   only for cylinders, cones, half-spaces and custom shapes (it sweeps
+//!   balls, boxes, capsules and hulls itself, and never a moving mesh).
+//! - `rapier::CertifiedPass` (feature `rapier`): with rapier, run it around
+//!   each step (`pass.step(&mut world)`), made with the dispatcher: it casts
+//!   every CCD body's actual motion over the step against everything it may
+//!   meet, plain shapes, nothing wrapped, and covers what rapier's CCD never
+//!   asks (two bullets, a moving mesh) or does with a time (its own clamping
+//!   path).
+//! - [`Swept`]: a collider shape wrapper with which rapier's own CCD hands
+//!   every pair of that collider to the dispatcher, for when the pass is
+//!   not run; the shape then says `Custom` ([`Swept::see_through`]).
 //!
 //! `f64` (the default feature, `parry3d-f64`) is re-exported at the root;
 //! `f32` (`parry3d`) is the module `f32` (re-exported at the root when
@@ -39,7 +45,8 @@ pub mod rapier;
 #[cfg(all(feature = "f32", not(feature = "f64")))]
 pub use crate::f32::*;
 
-/// The README's examples, run as doctests.
-#[cfg(doctest)]
+/// The README's examples, run as doctests (its rapier setup needs the
+/// feature `rapier`).
+#[cfg(all(doctest, feature = "rapier"))]
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;

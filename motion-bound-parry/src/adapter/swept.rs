@@ -18,6 +18,14 @@ use parry::shape::{
 /// its narrow phase's query dispatcher: with a [`CertifiedDispatcher`],
 /// every CCD pair with this collider is answered by the certified cast.
 ///
+/// Not needed to certify plain shapes: `rapier::CertifiedPass` (feature
+/// `rapier`) casts every CCD body's actual motion over the step, whatever
+/// its shapes, with nothing wrapped; that is the setup the README gives.
+/// `Swept` is for when the pass is not run (its cost is a scan of every
+/// collider per CCD body, for a few fast bodies, not thousands): it makes
+/// rapier's own CCD, within rapier's broad phase, ask the dispatcher for
+/// the wrapped collider's casts.
+///
 /// Rapier's CCD sweeps most pairs itself (balls, cuboids, capsules, convex
 /// polyhedra, compounds of these) and calls the dispatcher's
 /// `cast_shapes_nonlinear` only for pairs its own sweeps do not take
@@ -28,6 +36,23 @@ use parry::shape::{
 /// support map, composite structure, all delegated) except its kind: it
 /// says [`ShapeType::Custom`] and [`TypedShape::Custom`], which rapier's
 /// sweeps do not take, so they go to the dispatcher.
+///
+/// Its kind cannot be the inner shape's, soundly:
+/// - rapier chooses between its own sweep and the dispatcher by
+///   [`as_typed_shape`](Shape::as_typed_shape): a `Swept` answering the
+///   inner kind there would be swept by rapier itself, that is, do nothing;
+/// - `as_ball()`, `as_cuboid()` and the other `as_*()`, and
+///   `as_shape::<T>()`, are parry's downcasts of the concrete type, not
+///   methods a shape implements: on a `Swept` they answer `None`;
+/// - parry's own dispatcher matches on [`shape_type`](Shape::shape_type)
+///   and then unwraps the matching `as_*()` (a height field's, for one): a
+///   `shape_type()` saying the inner kind while `as_*()` says `None` would
+///   make it panic.
+///
+/// So a collider wrapped in `Swept` says `Custom` to whatever inspects
+/// shapes (a debug renderer, your own `match` on the kind): give it
+/// [`Swept::see_through`], which answers every one of these as the inner
+/// shape does.
 ///
 /// ```
 /// use motion_bound_parry::{CertifiedDispatcher, Swept};
