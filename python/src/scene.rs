@@ -57,8 +57,14 @@ impl Scene {
         let m = if let Ok(m) = motion.extract::<PyRef<'_, Motion>>() {
             m.clone()
         } else {
-            let pose = pose_arg(motion, "motion").map_err(|_| {
-                PyTypeError::new_err("motion must be a Motion, a Pose or a 4x4 array")
+            // A pose (a `Pose` or a 4x4 array): its own error (a matrix that
+            // is not a rotation, say) names `motion`; anything else is not one.
+            let pose = pose_arg(motion, "motion").map_err(|e| {
+                if e.is_instance_of::<pyo3::exceptions::PyValueError>(motion.py()) {
+                    e
+                } else {
+                    PyTypeError::new_err("motion must be a Motion, a Pose or a 4x4 array")
+                }
             })?;
             Motion::from_source(crate::motion::MotionSource::Velocities {
                 start: pose.source,

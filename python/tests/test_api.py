@@ -258,6 +258,8 @@ BAD_INPUTS = {
     "scene motion": (lambda: mb.Scene().add(BALL, mb.Motion.still(np.eye(4), duration=2.0)),
                      r"^motion: body 0"),
     "scene turned half-space": (lambda: turned_scene().query(), r"^body 1: a half-space"),
+    "scene pose": (lambda: mb.Scene().add(BALL, MIRROR), r"^motion: matrix is not a rotation"),
+    "scene not a motion": (lambda: mb.Scene().add(BALL, "still"), r"^motion must be"),
     "scene tolerance": (lambda: mb.Scene().query(tolerance=-1.0), r"^tolerance"),
     "scene max iterations": (lambda: mb.Scene().query(max_iterations=-5), r"^max_iterations"),
     "orthonormalize": (lambda: mb.orthonormalize(np.stack([np.eye(3), -np.eye(3)])),
@@ -358,6 +360,7 @@ def test_trimesh_capsule_is_along_z_with_height_between_centres():
         r = hit(body, down, c)
         assert want - (c + 1e-9) / 3.0 - 1e-12 <= r.time <= want + 1e-12 or body.kind == "mesh"
     assert hit(ours, down, c) == hit(by_hand, down, c)
+    assert hit(pickle.loads(pickle.dumps(ours)), down, c) == hit(ours, down, c)
     # From the side (trimesh's x-y plane, between its vertices): the exact capsule against
     # trimesh's own triangles, which lie inside it by at most the tessellation's gap.
     side = fly(t, [3.0 * np.cos(0.123), 3.0 * np.sin(0.123), 0.1], [0, 0, 0.1])
