@@ -75,6 +75,8 @@ def test_a_rotation_rounded_to_five_decimals_is_refused_then_cleaned():
     cleaned = mb.orthonormalize(rounded)
     np.testing.assert_allclose(cleaned, polar(rounded), atol=1e-14)
     assert deviation(cleaned) < 1e-15 and np.linalg.det(cleaned) > 0
+    # The documented bound: a point at distance d moves by at most 3 d max|R^T R - I|.
+    assert np.linalg.norm(cleaned - rounded, 2) <= 3 * deviation(rounded)
     check_same_answer(exact, cleaned)
     # Pickled, the cleaned pose comes back as the same pose.
     assert np.array_equal(pickle.loads(pickle.dumps(pose)).matrix, pose.matrix)
@@ -95,6 +97,7 @@ def test_a_product_of_200_float32_rotations(seed):
         mb.Pose(m)  # within the documented tolerance: accepted as it is
     cleaned = mb.Pose(m, orthonormalize=True).matrix[:3, :3]
     np.testing.assert_allclose(cleaned, polar(single.astype(float)), atol=1e-14)
+    assert np.linalg.norm(cleaned - single, 2) <= 3 * deviation(single)
     check_same_answer(exact, cleaned)
 
 
