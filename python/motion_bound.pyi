@@ -2,7 +2,7 @@
 moving bodies, never late and never missed (conservative advancement with proven
 motion bounds; the Rust crate motion-bound)."""
 
-from typing import Any, Iterable, Literal, Optional, Sequence, Tuple, Union
+from typing import Any, Iterable, Literal, Optional, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -20,7 +20,9 @@ class MotionBoundError(ValueError):
 
 class InputError(MotionBoundError):
     """A number the core refuses (NaN, infinity, out of range, a zero direction,
-    a matrix that is not a rotation, a negative radius, an empty vertex set)."""
+    a matrix that is not a rotation, a negative radius, an empty vertex set).
+    The message begins with the argument's name, with its index in an array
+    (`starts[3]: ...`, `half_extents[1] is negative`)."""
 
 class MeshError(MotionBoundError):
     """A triangle mesh the crate cannot use (no triangle, an index out of range)."""
@@ -58,18 +60,36 @@ def mesh(vertices: ArrayLike, faces: ArrayLike, solid: Optional[bool] = None) ->
     `True`: solid or `MeshError`; `False`: hollow."""
 
 def from_trimesh(mesh: Any, solid: Optional[bool] = None) -> Body:
-    """The body of a `trimesh.Trimesh` (its vertices and faces); `solid` as for `mesh`."""
+    """The body of a trimesh object. trimesh's exact primitives are taken as
+    trimesh means them, as exact convex shapes: `trimesh.primitives.Sphere`
+    (`radius`), `Box` (full `extents`, halved here), `Capsule` (`height`
+    between the sphere centres, along z) and `Cylinder` (whole `height`, along
+    z), each at its `primitive.transform` (a capsule, a cylinder or a placed
+    primitive comes back as a one-part `compound`); a primitive is solid
+    (`solid=False` is refused). Any other `trimesh.Trimesh`: its vertices and
+    faces, `solid` as for `mesh`."""
 
-def ball(radius: float) -> Body: ...
+def ball(radius: float) -> Body:
+    """A ball of `radius` (finite, at least 0) at the body origin."""
+
 def capsule(half_height: float, radius: float) -> Body:
-    """The segment from (0, -h, 0) to (0, h, 0) rounded by `radius`."""
+    """Along the body's **y** axis: the segment from (0, -half_height, 0) to
+    (0, half_height, 0) rounded by `radius`. trimesh's `Capsule(height,
+    radius)` lies along z with `height` between the sphere centres: it is
+    `capsule(height / 2, radius)` turned a quarter turn about x."""
 
-def box(half_extents: ArrayLike, rounding: float = 0.0) -> Body: ...
+def box(half_extents: ArrayLike, rounding: float = 0.0) -> Body:
+    """The box [-h0, h0] x [-h1, h1] x [-h2, h2] of the **half** extents h.
+    trimesh's `Box(extents)` takes full extents: it is `box(extents / 2)`."""
+
 def cylinder(half_height: float, radius: float, rounding: float = 0.0) -> Body:
-    """Along the body's y axis."""
+    """Along the body's **y** axis, |y| <= half_height. trimesh's
+    `Cylinder(radius, height)` lies along z with its whole height: it is
+    `cylinder(height / 2, radius)` turned a quarter turn about x."""
 
 def cone(half_height: float, radius: float, rounding: float = 0.0) -> Body:
-    """Along the body's y axis, apex at (0, h, 0)."""
+    """Along the body's **y** axis, apex at (0, half_height, 0), base at
+    y = -half_height."""
 
 def convex_hull(points: ArrayLike, rounding: float = 0.0) -> Body: ...
 def half_space(normal: ArrayLike) -> Body:
@@ -78,11 +98,22 @@ def half_space(normal: ArrayLike) -> Body:
 def compound(parts: Iterable[Tuple[Body, PoseLike]]) -> Body:
     """Meshes and convex shapes at poses in the compound's frame, moving as one."""
 
-class Pose:
-    """A rigid placement. `Pose(matrix)` (4x4 homogeneous; the rotation block
-    orthonormal to within 1e-6) or `Pose()` (the identity)."""
+def orthonormalize(matrix: ArrayLike) -> np.ndarray:
+    """The nearest rotation (polar decomposition, Newton's `R <- (R + R^-T)/2`)
+    of a 3x3 matrix, of a 4x4 pose's rotation block, or of each of a stack
+    `(..., 3, 3)` / `(..., 4, 4)`; same shape, float64. Refused (`InputError`)
+    for a matrix not near a rotation: not finite, det <= 0, or an entry of
+    R^T R - I beyond 1e-2. Points at distance d from the origin move by at most
+    about 3 * d * max|R^T R - I|."""
 
-    def __init__(self, matrix: Optional[ArrayLike] = None) -> None: ...
+class Pose:
+    """A rigid placement. `Pose(matrix)`: a 4x4 homogeneous matrix whose 3x3
+    block R is a rotation to within 1e-6 (every entry of R^T R - I at most 1e-6,
+    det R > 0), else `InputError`; `Pose(matrix, orthonormalize=True)` first
+    replaces R by the nearest rotation (see `orthonormalize`). `Pose()` is the
+    identity."""
+
+    def __init__(self, matrix: Optional[ArrayLike] = None, orthonormalize: bool = False) -> None: ...
     @staticmethod
     def from_wxyz(quaternion: ArrayLike, translation: Optional[ArrayLike] = None) -> Pose: ...
     @staticmethod
@@ -114,8 +145,16 @@ class Motion:
     def linear(self) -> np.ndarray: ...
     @property
     def angular(self) -> np.ndarray: ...
+    @property
+    def start(self) -> Pose:
+        """The pose at t = 0, as given."""
+    @property
+    def end(self) -> Pose:
+        """The pose at t = duration (the `end` given to `between`)."""
     def matrix_at(self, t: float) -> np.ndarray:
         """The 4x4 pose at time t."""
+    def pose_at(self, t: float) -> Pose:
+        """The pose at time t."""
 
 class MotionBatch:
     """Many motions over the same [0, duration]."""
@@ -135,9 +174,9 @@ class Report:
         self,
         outcome: Outcome,
         time: Optional[float],
-        point_a: Optional[Sequence[float]],
-        point_b: Optional[Sequence[float]],
-        normal: Optional[Sequence[float]],
+        point_a: Optional[ArrayLike],
+        point_b: Optional[ArrayLike],
+        normal: Optional[ArrayLike],
         distance: Optional[float],
         iterations: int,
     ) -> None: ...
@@ -150,11 +189,14 @@ class Report:
     def time(self) -> Optional[float]:
         """The contact time, or the safe time reached when undecided."""
     @property
-    def point_a(self) -> Optional[list[float]]: ...
+    def point_a(self) -> Optional[np.ndarray]:
+        """The closest point on A at the contact: float64, shape (3,)."""
     @property
-    def point_b(self) -> Optional[list[float]]: ...
+    def point_b(self) -> Optional[np.ndarray]:
+        """The closest point on B at the contact: float64, shape (3,)."""
     @property
-    def normal(self) -> Optional[list[float]]: ...
+    def normal(self) -> Optional[np.ndarray]:
+        """The unit normal from A to B: float64, shape (3,)."""
     @property
     def distance(self) -> Optional[float]: ...
     @property
@@ -229,8 +271,10 @@ class Scene:
         contact_distance: float = 1e-4,
         tolerance: float = 1e-9,
         max_iterations: int = 100,
-        parallel: bool = False,
-    ) -> list[Tuple[int, int, Report]]: ...
+        parallel: bool = True,
+    ) -> list[Tuple[int, int, Report]]:
+        """Every pair's first contact; on every core by default (as
+        `time_of_impact_batch`), the same answers bit for bit as `parallel=False`."""
     @property
     def stats(self) -> Optional[dict[str, int]]: ...
     def __len__(self) -> int: ...

@@ -4,14 +4,14 @@
 //! is how it pickles.
 
 use motion_bound::ca::{Compound, Part, Shape};
-use motion_bound::{BallTree, Convex, HalfSpace, Isometry, TriMesh, Vec3, VertexSet};
+use motion_bound::{BallTree, Convex, HalfSpace, Isometry, MeshError, TriMesh, Vec3, VertexSet};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple};
 
-use crate::arrays::{rows3, to_numpy, triangles, vec3};
-use crate::errors::{input, mesh as mesh_err};
-use crate::motion::{pose_arg, Pose};
+use crate::arrays::{matrix4, rows3, to_numpy, triangles, vec3};
+use crate::errors::{input, input_in, length_arg, mesh_in, positive_arg};
+use crate::motion::{pose_arg, Pose, PoseSource};
 
 /// A primitive convex shape and how it was made.
 #[derive(Clone, Copy, Debug)]
@@ -23,19 +23,37 @@ pub(crate) enum Primitive {
     Cone(f64, f64),
 }
 
+/// The convex shape of `p` rounded by `rounding`. Every length is checked
+/// here first, so that an error names the argument (`half_extents[1]`, say)
+/// where the core would say "radius"; what the core still refuses (a
+/// magnitude beyond its range) is reported with the argument names too.
 fn primitive_convex(p: Primitive, rounding: f64) -> PyResult<Convex<'static, f64>> {
-    let c = match p {
-        Primitive::Ball(r) => Convex::try_ball(r),
-        Primitive::Capsule(h, r) => Convex::try_capsule(h, r),
-        Primitive::Cuboid(h) => Convex::try_cuboid(h),
-        Primitive::Cylinder(h, r) => Convex::try_cylinder(h, r),
-        Primitive::Cone(h, r) => Convex::try_cone(h, r),
-    }
-    .map_err(input)?;
-    if rounding == 0.0 {
+    let (c, names) = match p {
+        Primitive::Ball(r) => (Convex::try_ball(length_arg(r, "radius")?), "radius"),
+        Primitive::Capsule(h, r) => (
+            Convex::try_capsule(length_arg(h, "half_height")?, length_arg(r, "radius")?),
+            "half_height, radius",
+        ),
+        Primitive::Cuboid(h) => {
+            for (k, x) in h.iter().enumerate() {
+                length_arg(*x, &format!("half_extents[{k}]"))?;
+            }
+            (Convex::try_cuboid(h), "half_extents")
+        }
+        Primitive::Cylinder(h, r) => (
+            Convex::try_cylinder(positive_arg(h, "half_height")?, length_arg(r, "radius")?),
+            "half_height, radius",
+        ),
+        Primitive::Cone(h, r) => (
+            Convex::try_cone(positive_arg(h, "half_height")?, length_arg(r, "radius")?),
+            "half_height, radius",
+        ),
+    };
+    let c = c.map_err(input_in(names))?;
+    if length_arg(rounding, "rounding")? == 0.0 {
         Ok(c)
     } else {
-        c.try_rounded(rounding).map_err(input)
+        c.try_rounded(rounding).map_err(input_in("rounding"))
     }
 }
 
@@ -48,6 +66,8 @@ pub(crate) struct Hull {
 
 impl Hull {
     fn new(points: Vec<[f64; 3]>, rounding: f64) -> PyResult<Self> {
+        length_arg(rounding, "rounding")?;
+        VertexSet::try_new(&points).map_err(input_in("points"))?;
         let hull = Self { points, rounding };
         hull.convex(None)?; // validated once here
         Ok(hull)
@@ -57,7 +77,7 @@ impl Hull {
         let set = VertexSet::try_new(&self.points).map_err(input)?;
         let mut c = Convex::polytope(set);
         if self.rounding != 0.0 {
-            c = c.try_rounded(self.rounding).map_err(input)?;
+            c = c.try_rounded(self.rounding).map_err(input_in("rounding"))?;
         }
         match at {
             Some(pose) => c.try_placed(pose).map_err(input),
@@ -78,14 +98,22 @@ impl MeshData {
     /// `MeshError` unless closed and outward-wound), `Some(false)` hollow,
     /// `None` solid exactly when it is closed and outward-wound.
     fn new(vertices: Vec<[f64; 3]>, faces: Vec<[u32; 3]>, solid: Option<bool>) -> PyResult<Self> {
-        let mesh = TriMesh::try_new(vertices, faces).map_err(mesh_err)?;
+        let mesh = TriMesh::try_new(vertices, faces).map_err(|e| {
+            let what = match e {
+                MeshError::Vertex(_) | MeshError::NoVertices => "vertices",
+                _ => "faces",
+            };
+            mesh_in(what)(e)
+        })?;
+        let asked = solid.is_some();
         let solid = solid.unwrap_or_else(|| mesh.is_closed() && mesh.signed_volume() > 0.0);
         let mesh = if solid {
-            mesh.try_solid().map_err(mesh_err)?
+            mesh.try_solid()
+                .map_err(mesh_in(if asked { "solid=True" } else { "solid" }))?
         } else {
             mesh
         };
-        let tree = BallTree::try_from_mesh(&mesh).map_err(input)?;
+        let tree = BallTree::try_from_mesh(&mesh).map_err(input_in("vertices, faces"))?;
         Ok(Self { mesh, tree })
     }
 }
@@ -165,12 +193,12 @@ impl Body {
                         })
                     })
                     .collect::<PyResult<Vec<_>>>()?;
-                Prepared::Compound(Compound::try_new(parts).map_err(input)?)
+                Prepared::Compound(Compound::try_new(parts).map_err(input_in("parts"))?)
             }
         })
     }
 
-    fn kind_name(&self) -> &'static str {
+    pub(crate) fn kind_name(&self) -> &'static str {
         match &self.data {
             Data::Convex { primitive, .. } => match primitive {
                 Primitive::Ball(_) => "ball",
@@ -366,35 +394,173 @@ fn mesh(
     })
 }
 
-/// The body of a `trimesh.Trimesh` (its `vertices` and `faces`); trimesh is
-/// imported only by the caller. `solid` as for `mesh`: by default solid
-/// when the mesh is closed and outward-wound.
-#[pyfunction]
-#[pyo3(signature = (mesh_obj, solid = None))]
-fn from_trimesh(mesh_obj: &Bound<'_, PyAny>, solid: Option<bool>) -> PyResult<Body> {
-    let (Ok(v), Ok(f)) = (mesh_obj.getattr("vertices"), mesh_obj.getattr("faces")) else {
-        return Err(PyTypeError::new_err(
-            "from_trimesh takes an object with `vertices` and `faces` (a trimesh.Trimesh)",
-        ));
-    };
-    mesh(&v, &f, solid)
+/// Which of trimesh's exact primitives `obj` is (`"Sphere"`, `"Box"`,
+/// `"Capsule"` or `"Cylinder"`, a class of that name in
+/// `trimesh.primitives` among its type's bases), if any. trimesh itself is
+/// never imported here.
+fn trimesh_primitive(obj: &Bound<'_, PyAny>) -> PyResult<Option<&'static str>> {
+    for cls in obj.get_type().getattr("__mro__")?.try_iter()? {
+        let cls = cls?;
+        let module: String = cls.getattr("__module__")?.extract().unwrap_or_default();
+        if module != "trimesh.primitives" {
+            continue;
+        }
+        let name: String = cls.getattr("__name__")?.extract()?;
+        for kind in ["Sphere", "Box", "Capsule", "Cylinder"] {
+            if name == kind {
+                return Ok(Some(kind));
+            }
+        }
+    }
+    Ok(None)
 }
 
-/// A ball of `radius` centred at the body origin.
+/// A body placed at `matrix` in its own frame: the body itself when the
+/// matrix is the identity, else a compound of one part.
+fn placed(py: Python<'_>, body: Body, matrix: [f64; 16], what: &str) -> PyResult<Body> {
+    let identity = [
+        1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
+    ];
+    if matrix == identity {
+        return Ok(body);
+    }
+    let pose = Pose::from_source(PoseSource::Matrix(matrix)).map_err(|e| {
+        let msg = e.value(py).to_string();
+        crate::errors::InputError::new_err(format!("{what}: {msg}"))
+    })?;
+    let part = PyTuple::new(
+        py,
+        [
+            Bound::new(py, body)?.into_any(),
+            Bound::new(py, pose)?.into_any(),
+        ],
+    )?;
+    compound(PyList::new(py, [part])?.as_any())
+}
+
+/// The body of one of trimesh's primitives as trimesh means it: its
+/// `primitive` attributes (a sphere's `radius`; a box's full `extents`; a
+/// capsule's `height` between its two sphere centres and a cylinder's whole
+/// `height`, both along z; each at its `transform`).
+fn from_trimesh_primitive(obj: &Bound<'_, PyAny>, kind: &str) -> PyResult<Body> {
+    let py = obj.py();
+    let prim = obj.getattr("primitive")?;
+    let number = |name: &str| -> PyResult<f64> {
+        prim.getattr(name)?.extract().map_err(|_| {
+            PyTypeError::new_err(format!("mesh.primitive.{name} must be a real number"))
+        })
+    };
+    let transform = matrix4(&prim.getattr("transform")?, "mesh.primitive.transform")?;
+    // Ours lie along y, trimesh's along z: the quarter turn about x that
+    // takes y to z, composed exactly (a permutation of the columns of the
+    // transform's rotation block, one negated).
+    let along_z = |m: [f64; 16]| -> [f64; 16] {
+        let mut out = m;
+        for row in 0..3 {
+            out[4 * row + 1] = m[4 * row + 2];
+            out[4 * row + 2] = -m[4 * row + 1];
+        }
+        out
+    };
+    let what = "mesh.primitive.transform";
+    match kind {
+        "Sphere" => placed(
+            py,
+            convex_body(Primitive::Ball(number("radius")?), 0.0)
+                .map_err(|e| prefixed(py, e, "mesh.primitive"))?,
+            transform,
+            what,
+        ),
+        "Box" => {
+            let e = vec3(&prim.getattr("extents")?, "mesh.primitive.extents")?;
+            let half = [e[0] / 2.0, e[1] / 2.0, e[2] / 2.0];
+            let body = convex_body(Primitive::Cuboid(half), 0.0)
+                .map_err(|e| prefixed(py, e, "mesh.primitive.extents / 2"))?;
+            placed(py, body, transform, what)
+        }
+        "Capsule" => {
+            let p = Primitive::Capsule(number("height")? / 2.0, number("radius")?);
+            let body =
+                convex_body(p, 0.0).map_err(|e| prefixed(py, e, "mesh.primitive (height / 2)"))?;
+            placed(py, body, along_z(transform), what)
+        }
+        _ => {
+            let p = Primitive::Cylinder(number("height")? / 2.0, number("radius")?);
+            let body =
+                convex_body(p, 0.0).map_err(|e| prefixed(py, e, "mesh.primitive (height / 2)"))?;
+            placed(py, body, along_z(transform), what)
+        }
+    }
+}
+
+/// `e` with its message prefixed by `what`, of the same type.
+fn prefixed(py: Python<'_>, e: PyErr, what: &str) -> PyErr {
+    let msg = format!("{what}: {}", e.value(py));
+    if e.is_instance_of::<crate::errors::InputError>(py) {
+        crate::errors::InputError::new_err(msg)
+    } else {
+        PyValueError::new_err(msg)
+    }
+}
+
+/// The body of a trimesh object; trimesh is imported only by the caller.
+///
+/// trimesh's exact primitives are taken as trimesh means them, as exact
+/// convex shapes (not their triangles): `trimesh.primitives.Sphere` (its
+/// `radius`), `Box` (its `extents`, full lengths: halved here, since `box`
+/// takes half extents), `Capsule` (its `height` between the two sphere
+/// centres, along z) and `Cylinder` (its whole `height`, along z), each at
+/// its `primitive.transform`. Our capsules and cylinders lie along y, so
+/// these two (and every primitive whose transform is not the identity) come
+/// back as a `compound` of one part, turned and placed; a sphere or box at
+/// the identity comes back as a `ball` or `box`. For the primitive's
+/// triangles instead, pass `mesh(m.vertices, m.faces)`.
+///
+/// Any other object with `vertices` and `faces` (a `trimesh.Trimesh`) is a
+/// triangle mesh, `solid` as for `mesh`: by default solid when the mesh is
+/// closed and outward-wound. A primitive is always solid: `solid=False` is
+/// refused for one.
+#[pyfunction]
+#[pyo3(signature = (mesh, solid = None))]
+fn from_trimesh(mesh: &Bound<'_, PyAny>, solid: Option<bool>) -> PyResult<Body> {
+    if let Some(kind) = trimesh_primitive(mesh)? {
+        if solid == Some(false) {
+            return Err(PyValueError::new_err(format!(
+                "solid=False: a trimesh {kind} is a solid primitive; for its triangles alone, \
+                 pass mesh(m.vertices, m.faces, solid=False)"
+            )));
+        }
+        return from_trimesh_primitive(mesh, kind);
+    }
+    let (Ok(v), Ok(f)) = (mesh.getattr("vertices"), mesh.getattr("faces")) else {
+        return Err(PyTypeError::new_err(
+            "mesh: from_trimesh takes an object with `vertices` and `faces` (a trimesh.Trimesh)",
+        ));
+    };
+    self::mesh(&v, &f, solid)
+}
+
+/// A ball of `radius` (finite, at least 0) centred at the body origin.
 #[pyfunction]
 fn ball(radius: f64) -> PyResult<Body> {
     convex_body(Primitive::Ball(radius), 0.0)
 }
 
-/// A capsule: the segment from `(0, -half_height, 0)` to
-/// `(0, half_height, 0)` rounded by `radius`.
+/// A capsule along the body's **y** axis: the segment from
+/// `(0, -half_height, 0)` to `(0, half_height, 0)` rounded by `radius`
+/// (both finite, at least 0). trimesh's `Capsule(height, radius)` lies along
+/// z with `height` between the sphere centres: it is
+/// `capsule(height / 2, radius)` turned by a quarter turn about x
+/// (`from_trimesh` does this).
 #[pyfunction]
 fn capsule(half_height: f64, radius: f64) -> PyResult<Body> {
     convex_body(Primitive::Capsule(half_height, radius), 0.0)
 }
 
-/// The box `[-h0, h0] x [-h1, h1] x [-h2, h2]` of the half extents `h`,
-/// rounded by `rounding` (every point within `rounding` of the box).
+/// The box `[-h0, h0] x [-h1, h1] x [-h2, h2]` of the **half** extents
+/// `h = half_extents` (three finite numbers, at least 0), rounded by
+/// `rounding` (every point within `rounding` of the box). trimesh's
+/// `Box(extents)` takes full extents: it is `box(extents / 2)`.
 #[pyfunction]
 #[pyo3(name = "box", signature = (half_extents, rounding = 0.0))]
 fn cuboid(half_extents: &Bound<'_, PyAny>, rounding: f64) -> PyResult<Body> {
@@ -404,16 +570,20 @@ fn cuboid(half_extents: &Bound<'_, PyAny>, rounding: f64) -> PyResult<Body> {
     )
 }
 
-/// The cylinder along the body's `y` axis, `|y| <= half_height`, of radius
-/// `radius`, rounded by `rounding`.
+/// The cylinder along the body's **y** axis, `|y| <= half_height`
+/// (positive), of radius `radius` (at least 0), rounded by `rounding`.
+/// trimesh's `Cylinder(radius, height)` lies along z with its whole height:
+/// it is `cylinder(height / 2, radius)` turned by a quarter turn about x
+/// (`from_trimesh` does this).
 #[pyfunction]
 #[pyo3(signature = (half_height, radius, rounding = 0.0))]
 fn cylinder(half_height: f64, radius: f64, rounding: f64) -> PyResult<Body> {
     convex_body(Primitive::Cylinder(half_height, radius), rounding)
 }
 
-/// The cone along the body's `y` axis, apex `(0, half_height, 0)`, base of
-/// radius `radius` at `y = -half_height`, rounded by `rounding`.
+/// The cone along the body's **y** axis, apex `(0, half_height, 0)`
+/// (`half_height` positive), base of radius `radius` at `y = -half_height`,
+/// rounded by `rounding`.
 #[pyfunction]
 #[pyo3(signature = (half_height, radius, rounding = 0.0))]
 fn cone(half_height: f64, radius: f64, rounding: f64) -> PyResult<Body> {
@@ -438,7 +608,7 @@ fn half_space(normal: &Bound<'_, PyAny>) -> PyResult<Body> {
     Ok(Body {
         data: Data::HalfSpace {
             normal: n,
-            half: HalfSpace::try_new(Vec3::from_array(n)).map_err(input)?,
+            half: HalfSpace::try_new(Vec3::from_array(n)).map_err(input_in("normal"))?,
         },
     })
 }
@@ -460,36 +630,42 @@ fn transform_mesh(m: &TriMesh<f64>, at: &Isometry<f64>) -> PyResult<MeshData> {
 /// are meshes and convex shapes (not half-spaces or compounds).
 #[pyfunction]
 fn compound(parts: &Bound<'_, PyAny>) -> PyResult<Body> {
-    let py = parts.py();
     let mut given = Vec::new();
     let mut owned = Vec::new();
-    for item in parts.try_iter()? {
+    let items = parts
+        .try_iter()
+        .map_err(|_| PyTypeError::new_err("parts must be a list of (body, pose) pairs"))?;
+    for (k, item) in items.enumerate() {
         let item = item?;
         let (body, pose): (Bound<'_, PyAny>, Bound<'_, PyAny>) = item
             .extract()
-            .map_err(|_| PyTypeError::new_err("compound parts are (body, pose) pairs"))?;
+            .map_err(|_| PyTypeError::new_err(format!("parts[{k}] must be a (body, pose) pair")))?;
         let body: Bound<'_, Body> = body
             .cast_into()
-            .map_err(|_| PyTypeError::new_err("a compound part must be a Body"))?;
-        let pose = pose_arg(&pose, "part pose")?;
+            .map_err(|_| PyTypeError::new_err(format!("parts[{k}][0] must be a Body")))?;
+        let pose = pose_arg(&pose, &format!("parts[{k}][1]"))?;
         let at = pose.iso;
+        let what = format!("parts[{k}]");
         let part = match &body.get().data {
-            Data::Convex { convex, .. } => OwnedPart::Convex(convex.try_placed(at).map_err(input)?),
+            Data::Convex { convex, .. } => {
+                OwnedPart::Convex(convex.try_placed(at).map_err(input_in(&what))?)
+            }
             Data::Hull(h) => OwnedPart::Hull(h.clone(), at),
             Data::Mesh(m) => OwnedPart::Mesh(transform_mesh(&m.mesh, &at)?),
             Data::HalfSpace { .. } | Data::Compound { .. } => {
-                return Err(PyValueError::new_err(
-                    "a compound's parts are meshes and convex shapes (no half-space, no compound)",
-                ))
+                return Err(PyValueError::new_err(format!(
+                    "parts[{k}] is a {}: a compound's parts are meshes and convex shapes (no \
+                     half-space, no compound)",
+                    body.get().kind_name()
+                )))
             }
         };
         owned.push(part);
         given.push((body.unbind(), pose));
     }
     if owned.is_empty() {
-        return Err(input(motion_bound::InputError::EmptyCompound));
+        return Err(input_in("parts")(motion_bound::InputError::EmptyCompound));
     }
-    let _ = py;
     let b = Body {
         data: Data::Compound {
             given,

@@ -16,7 +16,8 @@ create_exception!(
     InputError,
     MotionBoundError,
     "A number the core refuses: NaN or infinite, beyond the input range, a zero direction or \
-     quaternion, a negative radius, a matrix that is not a rotation, an empty vertex set."
+     quaternion, a negative radius, a matrix that is not a rotation, an empty vertex set. The \
+     message begins with the argument's name and, in an array, the index."
 );
 create_exception!(
     motion_bound,
@@ -47,9 +48,42 @@ pub(crate) fn input(e: motion_bound::InputError) -> PyErr {
     InputError::new_err(e.to_string())
 }
 
-/// A mesh's refusal, as `MeshError`.
-pub(crate) fn mesh(e: motion_bound::MeshError) -> PyErr {
-    MeshError::new_err(e.to_string())
+/// The core's refusal of the argument `what` (a name such as `"start"` or
+/// `"starts[3]"`), as `InputError` whose message begins with it.
+pub(crate) fn input_in(what: &str) -> impl Fn(motion_bound::InputError) -> PyErr + '_ {
+    move |e| InputError::new_err(format!("{what}: {e}"))
+}
+
+/// The argument `name`'s value `x` if it is a finite number at least 0 (a
+/// length: a radius, a half extent, a rounding), else `InputError` naming it.
+pub(crate) fn length_arg(x: f64, name: &str) -> PyResult<f64> {
+    if !x.is_finite() {
+        Err(InputError::new_err(format!(
+            "{name} is not finite (got {x})"
+        )))
+    } else if x < 0.0 {
+        Err(InputError::new_err(format!("{name} is negative (got {x})")))
+    } else {
+        Ok(x)
+    }
+}
+
+/// The argument `name`'s value `x` if it is finite and above 0 (a duration,
+/// a cylinder's half height), else `InputError` naming it.
+pub(crate) fn positive_arg(x: f64, name: &str) -> PyResult<f64> {
+    if x.is_finite() && x > 0.0 {
+        Ok(x)
+    } else {
+        Err(InputError::new_err(format!(
+            "{name} must be positive and finite (got {x})"
+        )))
+    }
+}
+
+/// A mesh's refusal of the argument `what`, as `MeshError` whose message
+/// begins with it.
+pub(crate) fn mesh_in(what: &str) -> impl Fn(motion_bound::MeshError) -> PyErr + '_ {
+    move |e| MeshError::new_err(format!("{what}: {e}"))
 }
 
 /// A query's refusal, as `QueryError` (or `InputError` for the input it

@@ -28,7 +28,11 @@ use pyo3::prelude::*;
 ///
 /// Bodies: `mesh`, `ball`, `capsule`, `box`, `cylinder`, `cone`,
 /// `convex_hull`, `half_space`, `compound`, `from_trimesh`.
-/// Poses: `Pose` (a 4x4 matrix, or a quaternion and a translation).
+/// Poses: `Pose` (a 4x4 matrix whose rotation block is orthonormal to
+/// within 1e-6, or a quaternion and a translation); `orthonormalize` cleans
+/// a rotation rounded beyond that. Capsules, cylinders and cones lie along
+/// y; `box` takes half extents (trimesh: along z, full extents; its
+/// primitives go through `from_trimesh`).
 /// Motions: `Motion.between(start, end)`, `Motion(start, linear, angular)`,
 /// `MotionBatch` for many.
 /// Queries: `time_of_impact`, `time_of_impact_batch`, `Scene`.

@@ -105,6 +105,19 @@ fn opt3(x: [f64; 3]) -> Option<[f64; 3]> {
     }
 }
 
+/// `x` as a `float64` numpy array of shape `(3,)`, or `None` (NaN: absent).
+fn opt3_numpy<'py>(py: Python<'py>, x: [f64; 3]) -> PyResult<Option<Bound<'py, PyAny>>> {
+    opt3(x).map(|v| to_numpy(py, v.to_vec(), &[3])).transpose()
+}
+
+/// An optional `(3,)` vector argument of `Report(...)`.
+fn opt_vec3(obj: Option<&Bound<'_, PyAny>>, what: &str) -> PyResult<Option<[f64; 3]>> {
+    match obj {
+        Some(o) if !o.is_none() => Ok(Some(crate::arrays::vec3(o, what)?)),
+        _ => Ok(None),
+    }
+}
+
 /// One query's answer.
 ///
 /// `outcome` is one of "contact" (first contact at `time`),
@@ -129,16 +142,21 @@ impl Report {
     fn py_new(
         outcome: &str,
         time: Option<f64>,
-        point_a: Option<[f64; 3]>,
-        point_b: Option<[f64; 3]>,
-        normal: Option<[f64; 3]>,
+        point_a: Option<&Bound<'_, PyAny>>,
+        point_b: Option<&Bound<'_, PyAny>>,
+        normal: Option<&Bound<'_, PyAny>>,
         distance: Option<f64>,
         iterations: u32,
     ) -> PyResult<Self> {
-        let code = OUTCOMES
-            .iter()
-            .position(|o| *o == outcome)
-            .ok_or_else(|| PyValueError::new_err(format!("unknown outcome {outcome:?}")))?;
+        let point_a = opt_vec3(point_a, "point_a")?;
+        let point_b = opt_vec3(point_b, "point_b")?;
+        let normal = opt_vec3(normal, "normal")?;
+        let code = OUTCOMES.iter().position(|o| *o == outcome).ok_or_else(|| {
+            PyValueError::new_err(format!(
+                "outcome: unknown outcome {outcome:?} (one of {})",
+                OUTCOMES.join(", ")
+            ))
+        })?;
         Ok(Self {
             flat: Flat {
                 code: code as u8,
@@ -171,22 +189,25 @@ impl Report {
         (!self.flat.time.is_nan()).then_some(self.flat.time)
     }
 
-    /// The closest point on A at the contact (world frame), or `None`.
+    /// The closest point on A at the contact (world frame; a `float64`
+    /// array of shape `(3,)`, as a row of `BatchReport.points_a`), or `None`.
     #[getter]
-    fn point_a(&self) -> Option<[f64; 3]> {
-        opt3(self.flat.on_a)
+    fn point_a<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        opt3_numpy(py, self.flat.on_a)
     }
 
-    /// The closest point on B at the contact (world frame), or `None`.
+    /// The closest point on B at the contact (world frame; a `float64`
+    /// array of shape `(3,)`), or `None`.
     #[getter]
-    fn point_b(&self) -> Option<[f64; 3]> {
-        opt3(self.flat.on_b)
+    fn point_b<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        opt3_numpy(py, self.flat.on_b)
     }
 
-    /// The unit normal from A to B at the contact, or `None`.
+    /// The unit normal from A to B at the contact (a `float64` array of
+    /// shape `(3,)`), or `None`.
     #[getter]
-    fn normal(&self) -> Option<[f64; 3]> {
-        opt3(self.flat.normal)
+    fn normal<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
+        opt3_numpy(py, self.flat.normal)
     }
 
     /// The distance between the witness points at the contact, or `None`.
@@ -207,9 +228,9 @@ impl Report {
         let args = (
             r.outcome(),
             r.time(),
-            r.point_a(),
-            r.point_b(),
-            r.normal(),
+            opt3(r.flat.on_a),
+            opt3(r.flat.on_b),
+            opt3(r.flat.normal),
             r.distance(),
             r.iterations(),
         )
@@ -247,18 +268,68 @@ impl Report {
     }
 }
 
-/// The query parameters from the keyword arguments.
+/// The query parameters from the keyword arguments, each checked here so
+/// that an error names it as Python spells it.
 pub(crate) fn params(
     contact_distance: f64,
     tolerance: f64,
-    max_iterations: u32,
+    max_iterations: i64,
 ) -> PyResult<CaParams<f64>> {
+    if !(contact_distance.is_finite() && contact_distance > 0.0) {
+        return Err(crate::errors::QueryError::new_err(format!(
+            "contact_distance must be positive and finite (got {contact_distance})"
+        )));
+    }
+    if !(tolerance.is_finite() && tolerance >= 0.0) {
+        return Err(crate::errors::QueryError::new_err(format!(
+            "tolerance must be finite and at least 0 (got {tolerance})"
+        )));
+    }
+    let max_iterations = u32::try_from(max_iterations)
+        .ok()
+        .filter(|&k| k >= 1)
+        .ok_or_else(|| {
+            crate::errors::QueryError::new_err(format!(
+                "max_iterations must be an integer in 1..={} (got {max_iterations})",
+                u32::MAX
+            ))
+        })?;
     let p = CaParams::default()
         .with_contact_distance(contact_distance)
         .with_time_tolerance(tolerance)
         .with_max_iterations(max_iterations);
     p.validate().map_err(query)?;
     Ok(p)
+}
+
+/// A pair query's refusal, naming what it is about: the two bodies' kinds
+/// (`kinds`) for a pair no stepper takes or a turning half-space.
+pub(crate) fn pair_error(e: motion_bound::ca::CaError, kinds: (&str, &str)) -> PyErr {
+    use motion_bound::ca::CaError as E;
+    match e {
+        E::Unsupported => crate::errors::QueryError::new_err(format!(
+            "no stepper takes the pair a={}, b={}: every pair of kinds is supported but two \
+             half-spaces (a half_space meets a mesh, a convex shape or a compound; make one of \
+             them a large box, say)",
+            kinds.0, kinds.1
+        )),
+        E::TurnedHalfSpace => {
+            let which = match kinds {
+                ("half_space", "half_space") => "a and b",
+                ("half_space", _) => "a",
+                _ => "b",
+            };
+            crate::errors::QueryError::new_err(format!(
+                "{which}: a half-space may only translate (no start orientation, no spin): give \
+                 its normal in the world frame and a motion with the identity rotation and no \
+                 angular velocity"
+            ))
+        }
+        E::IntervalMismatch => crate::errors::QueryError::new_err(
+            "the motions of a and b have different intervals (give them the same duration)",
+        ),
+        other => query(other),
+    }
 }
 
 /// One pair query (the pair's stepper made for it, its workspace reused).
@@ -298,14 +369,15 @@ fn time_of_impact(
     motion_b: &Bound<'_, Motion>,
     contact_distance: f64,
     tolerance: f64,
-    max_iterations: u32,
+    max_iterations: i64,
 ) -> PyResult<Report> {
     let p = params(contact_distance, tolerance, max_iterations)?;
     let (ba, bb) = (a.get(), b.get());
     let (ma, mb) = (motion_a.get().motion, motion_b.get().motion);
     let flat = py.detach(|| -> PyResult<Flat> {
         let (pa, pb) = (ba.prepare()?, bb.prepare()?);
-        run(&pa, &pb, &ma, &mb, &p, &mut None).map_err(query)
+        run(&pa, &pb, &ma, &mb, &p, &mut None)
+            .map_err(|e| pair_error(e, (ba.kind_name(), bb.kind_name())))
     })?;
     Ok(Report { flat })
 }
@@ -361,7 +433,7 @@ fn time_of_impact_batch(
     motions_b: &Bound<'_, PyAny>,
     contact_distance: f64,
     tolerance: f64,
-    max_iterations: u32,
+    max_iterations: i64,
     parallel: bool,
 ) -> PyResult<BatchReport> {
     let p = params(contact_distance, tolerance, max_iterations)?;
@@ -388,7 +460,7 @@ fn time_of_impact_batch(
             let mut ws = None;
             (0..n).map(|i| one(&mut ws, i)).collect()
         };
-        out.map_err(query)
+        out.map_err(|e| pair_error(e, (ba.kind_name(), bb.kind_name())))
     })?;
     Ok(BatchReport { flats })
 }
@@ -432,30 +504,33 @@ impl BatchReport {
         let (d, _) = floats(distances, "distances")?;
         let (it, _) = floats(iterations, "iterations")?;
         let n = codes.len();
-        if let Some(bad) = codes
+        if let Some((i, bad)) = codes
             .iter()
-            .find(|&&c| !(c >= 0.0 && c < OUTCOMES.len() as f64 && c.fract() == 0.0))
+            .enumerate()
+            .find(|(_, &c)| !(c >= 0.0 && c < OUTCOMES.len() as f64 && c.fract() == 0.0))
         {
             return Err(PyValueError::new_err(format!(
-                "outcome code {bad} is not one of 0..{}",
+                "outcome_codes[{i}]: outcome code {bad} is not one of 0..{}",
                 OUTCOMES.len()
             )));
         }
-        if let Some(bad) = it
+        if let Some((i, bad)) = it
             .iter()
-            .find(|&&k| !(k >= 0.0 && k <= f64::from(u32::MAX) && k.fract() == 0.0))
+            .enumerate()
+            .find(|(_, &k)| !(k >= 0.0 && k <= f64::from(u32::MAX) && k.fract() == 0.0))
         {
             return Err(PyValueError::new_err(format!(
-                "iteration count {bad} is not a u32"
+                "iterations[{i}]: iteration count {bad} is not a u32"
             )));
         }
         if [t.len(), pa.len(), pb.len(), nm.len(), d.len(), it.len()]
             .iter()
             .any(|&k| k != n)
         {
-            return Err(PyValueError::new_err(
-                "the arrays must have one entry per query",
-            ));
+            return Err(PyValueError::new_err(format!(
+                "times, points_a, points_b, normals, distances, iterations: each must have one \
+                 entry per query, as outcome_codes ({n})"
+            )));
         }
         let flats = (0..n)
             .map(|i| Flat {

@@ -8,7 +8,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
 use crate::body::Body;
-use crate::errors::{input, scene as scene_err};
+use crate::errors::{input, input_in, positive_arg, scene as scene_err};
 use crate::motion::{pose_arg, Motion};
 use crate::query::{params, Flat, Report};
 
@@ -18,7 +18,9 @@ use crate::query::{params, Flat, Report};
 /// `(i, j, Report)` with `i < j`, for the pairs the broad phase could not
 /// rule out (a pair not listed provably stays apart), and fills `stats`
 /// (what the broad phase skipped, each skip counted). The GIL is released
-/// during the query; `parallel=True` runs the pairs on every core.
+/// during the query; by default (`parallel=True`, as for
+/// `time_of_impact_batch`) the pairs run on every core, with the same
+/// answers bit for bit as `parallel=False` (one core).
 #[pyclass(module = "motion_bound")]
 pub struct Scene {
     duration: f64,
@@ -32,6 +34,7 @@ impl Scene {
     #[pyo3(signature = (duration = 1.0))]
     fn py_new(duration: f64) -> PyResult<Self> {
         // As a motion's duration: finite and positive.
+        positive_arg(duration, "duration")?;
         let origin = motion_bound::Isometry::try_from_translation(motion_bound::Vec3::ZERO)
             .map_err(input)?;
         motion_bound::RigidMotion::try_from_start(
@@ -40,7 +43,7 @@ impl Scene {
             motion_bound::Vec3::ZERO,
             duration,
         )
-        .map_err(input)?;
+        .map_err(input_in("duration"))?;
         Ok(Self {
             duration,
             bodies: Vec::new(),
@@ -54,8 +57,14 @@ impl Scene {
         let m = if let Ok(m) = motion.extract::<PyRef<'_, Motion>>() {
             m.clone()
         } else {
-            let pose = pose_arg(motion, "motion").map_err(|_| {
-                PyTypeError::new_err("motion must be a Motion, a Pose or a 4x4 array")
+            // A pose (a `Pose` or a 4x4 array): its own error (a matrix that
+            // is not a rotation, say) names `motion`; anything else is not one.
+            let pose = pose_arg(motion, "motion").map_err(|e| {
+                if e.is_instance_of::<pyo3::exceptions::PyValueError>(motion.py()) {
+                    e
+                } else {
+                    PyTypeError::new_err("motion must be a Motion, a Pose or a 4x4 array")
+                }
             })?;
             Motion::from_source(crate::motion::MotionSource::Velocities {
                 start: pose.source,
@@ -66,11 +75,14 @@ impl Scene {
         };
         let i = m.motion.interval();
         if i.start() != 0.0 || i.end() != self.duration {
-            return Err(scene_err(
-                motion_bound::scene::SceneQueryError::IntervalMismatch {
-                    body: self.bodies.len(),
-                },
-            ));
+            return Err(crate::errors::QueryError::new_err(format!(
+                "motion: body {} moves over [{}, {}], the scene is over [0, {}] (give the motion \
+                 the scene's duration)",
+                self.bodies.len(),
+                i.start(),
+                i.end(),
+                self.duration
+            )));
         }
         self.bodies.push((body.unbind(), m));
         Ok(self.bodies.len() - 1)
@@ -80,14 +92,16 @@ impl Scene {
         self.bodies.len()
     }
 
-    /// Every pair's first contact: a list of `(i, j, Report)`.
-    #[pyo3(signature = (contact_distance = 1e-4, tolerance = 1e-9, max_iterations = 100, parallel = false))]
+    /// Every pair's first contact: a list of `(i, j, Report)`. On every
+    /// core by default (`parallel=True`); `parallel=False` runs on one, with
+    /// the same answers bit for bit.
+    #[pyo3(signature = (contact_distance = 1e-4, tolerance = 1e-9, max_iterations = 100, parallel = true))]
     fn query(
         &mut self,
         py: Python<'_>,
         contact_distance: f64,
         tolerance: f64,
-        max_iterations: u32,
+        max_iterations: i64,
         parallel: bool,
     ) -> PyResult<Vec<(usize, usize, Report)>> {
         let p =
@@ -114,7 +128,7 @@ impl Scene {
             } else {
                 scene.query(&mut ws, &p)
             }
-            .map_err(scene_err)?;
+            .map_err(|e| named_scene_error(e, &bodies))?;
             let pairs: Vec<(usize, usize, Flat)> = report
                 .pairs()
                 .iter()
@@ -154,6 +168,31 @@ impl Scene {
             self.duration
         )
     }
+}
+
+/// A scene query's refusal, naming the body it is about where the crate's
+/// message does not: a half-space whose motion turns.
+fn named_scene_error(
+    e: motion_bound::scene::SceneQueryError,
+    bodies: &[(&Body, motion_bound::RigidMotion<f64>)],
+) -> PyErr {
+    use motion_bound::ca::CaError;
+    use motion_bound::scene::SceneQueryError as E;
+    if let E::Ca(CaError::TurnedHalfSpace) = e {
+        let turned = bodies.iter().position(|(b, m)| {
+            b.kind_name() == "half_space"
+                && (m.angular() != motion_bound::Vec3::ZERO
+                    || m.orientation().quaternion() != [1.0, 0.0, 0.0, 0.0])
+        });
+        if let Some(i) = turned {
+            return crate::errors::QueryError::new_err(format!(
+                "body {i}: a half-space may only translate (no start orientation, no spin): \
+                 give its normal in the world frame and a motion with the identity rotation and \
+                 no angular velocity"
+            ));
+        }
+    }
+    scene_err(e)
 }
 
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

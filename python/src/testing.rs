@@ -34,7 +34,10 @@ fn motion(m: &motion_bound::RigidMotion<f64>) -> Motion {
 /// the seeded list the Rust `table1` report and benchmarks run.
 #[pyfunction]
 #[pyo3(signature = (size = "2.8K", queries = 200))]
-fn table1_scene<'py>(py: Python<'py>, size: &str, queries: usize) -> PyResult<Bound<'py, PyDict>> {
+fn table1_scene<'py>(py: Python<'py>, size: &str, queries: i64) -> PyResult<Bound<'py, PyDict>> {
+    let queries = usize::try_from(queries).map_err(|_| {
+        PyValueError::new_err(format!("queries must be at least 0 (got {queries})"))
+    })?;
     let size = match size {
         "2.8K" => TorusKnotSize::K2_8,
         "11K" => TorusKnotSize::K11,
