@@ -7,7 +7,7 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 /// What a call of this library ended with. `MB_STATUS_OK` (`0`) is success;
 /// on any other status nothing was written through the call's `out`
-/// pointers, and [`mb_last_error_message`] says what went wrong.
+/// pointers, and `mb_last_error_message` says what went wrong.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum MbStatus {
@@ -29,7 +29,7 @@ pub enum MbStatus {
     /// A count or array that cannot be right: zero items where some are
     /// needed, a size that overflows, a misaligned array.
     InvalidSize = 5,
-    /// A query parameter out of range ([`MbParams`](crate::MbParams)).
+    /// A query parameter out of range (`mb_params`).
     InvalidParameter = 6,
     /// A query that cannot run on these inputs: motions over different
     /// intervals, a turning half-space, two half-spaces, a body added to a
@@ -110,7 +110,7 @@ fn set_last_error(message: &str) {
 }
 
 /// Runs `body`, catching a panic: its failure's message is stored for
-/// [`mb_last_error_message`] and its status returned.
+/// `mb_last_error_message` and its status returned.
 pub(crate) fn guard(body: impl FnOnce() -> Res<()>) -> MbStatus {
     match catch_unwind(AssertUnwindSafe(body)) {
         Ok(Ok(())) => MbStatus::Ok,

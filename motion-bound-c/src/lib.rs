@@ -55,6 +55,6 @@ pub use scene::{
 };
 pub use shape::{
     mb_shape_ball, mb_shape_capsule, mb_shape_compound, mb_shape_cone, mb_shape_convex_hull,
-    mb_shape_cuboid, mb_shape_cylinder, mb_shape_free, mb_shape_half_space, mb_shape_kind,
+    mb_shape_cuboid, mb_shape_cylinder, mb_shape_free, mb_shape_get_kind, mb_shape_half_space,
     mb_shape_mesh, mb_shape_rounded, MbMeshSolidity, MbShape, MbShapeKind,
 };

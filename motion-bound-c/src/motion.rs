@@ -86,7 +86,7 @@ impl MbPose {
 
 /// A rigid motion over `[0, duration]`: constant linear and angular
 /// velocity (a screw motion), the exact motion the queries bound. Opaque;
-/// made by `mb_motion_*`, freed by [`mb_motion_free`]; immutable.
+/// made by `mb_motion_*`, freed by `mb_motion_free`; immutable.
 #[derive(Debug)]
 pub struct MbMotion {
     pub(crate) motion: RigidMotion<f64>,
@@ -102,7 +102,7 @@ impl Handle for MbMotion {
 /// time, about the world axis `angular / |angular|`), over `[0, duration]`:
 /// what an engine hands over for one step of length `duration`.
 ///
-/// Writes a new handle to `*out` (free it with [`mb_motion_free`]).
+/// Writes a new handle to `*out` (free it with `mb_motion_free`).
 /// `MB_STATUS_INVALID_INPUT` for a NaN or infinite component, a zero
 /// quaternion or `duration <= 0`; `MB_STATUS_NULL_POINTER` for `out == NULL`.
 ///
@@ -132,7 +132,7 @@ pub unsafe extern "C" fn mb_motion_from_velocities(
 /// line between the two positions (FCL's `InterpMotion`): for an engine
 /// that has the poses before and after a step.
 ///
-/// Writes a new handle to `*out`. Errors as [`mb_motion_from_velocities`].
+/// Writes a new handle to `*out`. Errors as `mb_motion_from_velocities`.
 ///
 /// **Thread safety**: any thread.
 ///
@@ -152,7 +152,7 @@ pub unsafe extern "C" fn mb_motion_between(
     })
 }
 
-/// As [`mb_motion_between`], turning about the body point `local_centre`
+/// As `mb_motion_between`, turning about the body point `local_centre`
 /// (the centre of mass, as engines integrate) instead of the body origin:
 /// that point moves on the straight line between its two positions.
 ///
@@ -187,7 +187,7 @@ pub unsafe extern "C" fn mb_motion_between_about(
 /// vectors), over `[0, duration]`:
 /// `p(t) = centre + linear t + R(angular t) rotation (r - local_centre)`.
 ///
-/// Writes a new handle to `*out`. Errors as [`mb_motion_from_velocities`].
+/// Writes a new handle to `*out`. Errors as `mb_motion_from_velocities`.
 ///
 /// **Thread safety**: any thread.
 ///

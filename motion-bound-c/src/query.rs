@@ -10,7 +10,7 @@ use crate::motion::{MbMotion, MbVec3};
 use crate::ptr::{handle_ref, read_in, write_out, Plain};
 use crate::shape::MbShape;
 
-/// Which directed bound a query uses ([`MbParams::bound`]).
+/// Which directed bound a query uses (`mb_params.bound`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MbBound {
@@ -24,7 +24,7 @@ pub enum MbBound {
 }
 
 /// Which pair within the contact distance a mesh contact reports as its
-/// witness ([`MbParams::witness`]).
+/// witness (`mb_params.witness`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MbWitnessSearch {
@@ -35,7 +35,7 @@ pub enum MbWitnessSearch {
 }
 
 /// The parameters of a query, a plain struct: start from
-/// [`mb_params_default`] and change fields. Checked by each query
+/// `mb_params_default` and change fields. Checked by each query
 /// (`MB_STATUS_INVALID_PARAMETER` when out of range).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -61,9 +61,9 @@ pub struct MbParams {
     pub max_iterations: u32,
     /// Iterations added per full turn the two bodies make. Default `16`.
     pub iterations_per_turn: u32,
-    /// An [`MbBound`] value. Default `MB_BOUND_AUTO`.
+    /// An `mb_bound` value. Default `MB_BOUND_AUTO`.
     pub bound: u32,
-    /// An [`MbWitnessSearch`] value. Default `MB_WITNESS_SEARCH_CLOSEST`.
+    /// An `mb_witness_search` value. Default `MB_WITNESS_SEARCH_CLOSEST`.
     pub witness: u32,
     /// Nonzero: bound the closing rate with one-sided bounds (never looser).
     /// Default `1`.
@@ -74,7 +74,7 @@ pub struct MbParams {
 // every bit pattern of the fields is a value.
 unsafe impl Plain for MbParams {}
 
-/// What ended a query ([`MbReport::outcome`]).
+/// What ended a query (`mb_report.outcome`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MbOutcome {
@@ -98,7 +98,7 @@ pub enum MbOutcome {
     PrecisionLimit = 5,
 }
 
-/// Which tolerance declared a contact ([`MbReport::criterion`]).
+/// Which tolerance declared a contact (`mb_report.criterion`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MbCriterion {

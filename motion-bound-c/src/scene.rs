@@ -15,8 +15,8 @@ use crate::query::{params, MbParams, MbReport};
 use crate::shape::{Data, MbShape};
 
 /// Many bodies moving over `[0, duration]`. Opaque; made by
-/// [`mb_scene_new`], grown by [`mb_scene_add`], queried by
-/// [`mb_scene_query`], freed by [`mb_scene_free`]. It shares its bodies'
+/// `mb_scene_new`, grown by `mb_scene_add`, queried by
+/// `mb_scene_query`, freed by `mb_scene_free`. It shares its bodies'
 /// shapes, so a shape may be freed once added.
 #[derive(Debug)]
 pub struct MbScene {
@@ -33,18 +33,18 @@ impl Handle for MbScene {
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MbScenePair {
-    /// The first body's number (as [`mb_scene_add`] returned it), `a < b`.
+    /// The first body's number (as `mb_scene_add` returned it), `a < b`.
     pub a: usize,
     /// The second body's number.
     pub b: usize,
-    /// The pair's first contact, as [`mb_time_of_impact`](crate::mb_time_of_impact) reports it.
+    /// The pair's first contact, as `mb_time_of_impact` reports it.
     pub report: MbReport,
 }
 
 /// A scene query's answer: the pairs its broad phase could not rule out
 /// (a pair not listed provably stays apart), each with its report. Opaque;
-/// read with [`mb_scene_result_len`] and [`mb_scene_result_get`], freed by
-/// [`mb_scene_result_free`]; immutable.
+/// read with `mb_scene_result_len` and `mb_scene_result_get`, freed by
+/// `mb_scene_result_free`; immutable.
 #[derive(Debug)]
 pub struct MbSceneResult {
     pairs: Vec<MbScenePair>,
@@ -170,7 +170,7 @@ fn run(sc: &MbScene, p: &SceneParams<f64>) -> Res<Vec<MbScenePair>> {
 
 /// Every pair's first contact in `scene` (`params` may be `NULL` for the
 /// defaults), as a new result handle written to `*out` (free it with
-/// [`mb_scene_result_free`]).
+/// `mb_scene_result_free`).
 ///
 /// **Thread safety**: any thread; several threads may query one scene at
 /// once, but none may add to it meanwhile.

@@ -130,7 +130,7 @@ impl Data {
 /// A body's shape in its own frame: a ball, capsule, cuboid, cylinder, cone
 /// (rounded or not), convex hull, triangle mesh (with its tree, built once),
 /// half-space or compound. Opaque; made by `mb_shape_*`, freed by
-/// [`mb_shape_free`]; immutable. A compound or a scene copies or shares what
+/// `mb_shape_free`; immutable. A compound or a scene copies or shares what
 /// it needs, so a shape may be freed once it has been passed to them.
 #[derive(Debug)]
 pub struct MbShape {
@@ -142,7 +142,7 @@ impl Handle for MbShape {
     const NAME: &'static str = "the shape";
 }
 
-/// The kind of a shape ([`mb_shape_kind`]).
+/// The kind of a shape (`mb_shape_get_kind`).
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MbShapeKind {
@@ -166,7 +166,7 @@ pub enum MbShapeKind {
     Compound = 8,
 }
 
-/// Whether a triangle mesh is solid ([`mb_shape_mesh`]): a body starting
+/// Whether a triangle mesh is solid (`mb_shape_mesh`): a body starting
 /// inside a solid mesh is in contact with it; a hollow mesh is its
 /// triangles alone.
 #[repr(C)]
@@ -352,7 +352,7 @@ pub unsafe extern "C" fn mb_shape_rounded(
 /// triangle_count` vertex indices, counter-clockwise seen from outside for
 /// a solid mesh), copied; its tree is built here, once. It need not be
 /// closed or convex. `solidity` says whether a body starting inside it is in
-/// contact ([`MbMeshSolidity`]: `0` auto, `1` solid, `2` hollow).
+/// contact (`mb_mesh_solidity`: `0` auto, `1` solid, `2` hollow).
 ///
 /// `MB_STATUS_INVALID_MESH` for an index out of range or a mesh that
 /// cannot be solid; `MB_STATUS_INVALID_SIZE` for no vertex or no triangle;
@@ -480,7 +480,10 @@ pub unsafe extern "C" fn mb_shape_compound(
 /// `shape` is not freed during the call; `out` is `NULL` or valid for
 /// writing an `mb_shape_kind`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn mb_shape_kind(shape: *const MbShape, out: *mut MbShapeKind) -> MbStatus {
+pub unsafe extern "C" fn mb_shape_get_kind(
+    shape: *const MbShape,
+    out: *mut MbShapeKind,
+) -> MbStatus {
     guard(|| {
         // SAFETY: `shape` is not freed during the call (this function's contract).
         let s = unsafe { handle_ref(shape) }?;
