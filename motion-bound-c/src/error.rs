@@ -71,7 +71,11 @@ impl From<motion_bound::InputError> for Failure {
 
 impl From<motion_bound::MeshError> for Failure {
     fn from(e: motion_bound::MeshError) -> Self {
-        Self::new(MbStatus::InvalidMesh, e.to_string())
+        match e {
+            // A NaN, infinite or out-of-range vertex: a bad number, as elsewhere.
+            motion_bound::MeshError::Vertex(_) => Self::new(MbStatus::InvalidInput, e.to_string()),
+            _ => Self::new(MbStatus::InvalidMesh, e.to_string()),
+        }
     }
 }
 

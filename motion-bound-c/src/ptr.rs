@@ -45,7 +45,7 @@ unsafe impl Plain for u32 {}
 // SAFETY: any address is a valid raw pointer value (it is checked before use).
 unsafe impl<T> Plain for *const T {}
 
-/// The addresses of the live handles, with their types.
+/// The addresses of the live handles (as [`key`]s), with their types.
 static LIVE: RwLock<BTreeMap<usize, Kind>> = RwLock::new(BTreeMap::new());
 
 /// The registry, for reading. A panic while it was held cannot leave it
@@ -61,6 +61,15 @@ fn live_mut() -> RwLockWriteGuard<'static, BTreeMap<usize, Kind>> {
         .unwrap_or_else(std::sync::PoisonError::into_inner)
 }
 
+/// The registry's key of a handle: its address with every bit flipped, so
+/// that the registry does not hold the handle's address itself: a leak
+/// checker scanning memory for pointers (LeakSanitizer) would otherwise find
+/// every handle reachable from the registry, and a handle the C caller never
+/// freed would not be reported as leaked.
+fn key<T>(ptr: *const T) -> usize {
+    !(ptr as usize)
+}
+
 fn null(what: &str) -> Failure {
     Failure::new(MbStatus::NullPointer, format!("{what} is NULL"))
 }
@@ -70,7 +79,7 @@ fn check_live<T: Handle>(ptr: *const T) -> Res<()> {
     if ptr.is_null() {
         return Err(null(T::NAME));
     }
-    match live().get(&(ptr as usize)) {
+    match live().get(&key(ptr)) {
         Some(&k) if k == T::KIND => Ok(()),
         Some(_) => Err(Failure::new(
             MbStatus::InvalidHandle,
@@ -121,9 +130,9 @@ pub(crate) unsafe fn free_handle<T: Handle>(ptr: *mut T) -> Res<()> {
     }
     {
         let mut live = live_mut();
-        match live.get(&(ptr as usize)) {
+        match live.get(&key(ptr)) {
             Some(&k) if k == T::KIND => {
-                live.remove(&(ptr as usize));
+                live.remove(&key(ptr));
             }
             _ => {
                 drop(live);
@@ -174,7 +183,7 @@ pub(crate) unsafe fn write_out<T>(out: *mut T, value: T, what: &str) -> Res<()> 
 pub(crate) unsafe fn write_handle<T: Handle>(out: *mut *mut T, value: T) -> Res<()> {
     check_out(out, "the out pointer")?;
     let ptr = Box::into_raw(Box::new(value));
-    live_mut().insert(ptr as usize, T::KIND);
+    live_mut().insert(key(ptr), T::KIND);
     // SAFETY: as in `write_out`: `out` is checked not null and aligned, and
     // valid for writes by the caller's contract.
     unsafe { out.write(ptr) };
