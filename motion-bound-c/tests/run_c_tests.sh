@@ -25,6 +25,19 @@ trap 'rm -rf "$out"' EXIT
   -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g \
   -I "$here/include" "$here/tests/c/test_motion_bound.c" "$lib" \
   -lpthread -ldl -lm -o "$out/test_motion_bound"
-ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 \
-UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 \
-  "$out/test_motion_bound"
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0
+export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+"$out/test_motion_bound"
+
+# The README's example, as written there: it must build cleanly, run and print the closed-form
+# time (2 - 0.25) / 3 = 0.58333 (reported up to the contact distance over the speed earlier).
+sed -n '/^```c$/,/^```$/p' "$here/README.md" | sed '1d;$d' > "$out/readme.c"
+"${CC:-cc}" -std=c11 -Wall -Wextra -Werror -pedantic -fsanitize=address,undefined \
+  -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g -I "$here/include" \
+  "$out/readme.c" "$lib" -lpthread -ldl -lm -o "$out/readme"
+readme_out="$("$out/readme")"
+echo "README example: $readme_out"
+case "$readme_out" in
+  "outcome 0 at t = 0.5833"*) ;;
+  *) echo "FAILED: the README example printed '$readme_out'"; exit 1 ;;
+esac
