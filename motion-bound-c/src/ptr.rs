@@ -74,13 +74,11 @@ fn null(what: &str) -> Failure {
     Failure::new(MbStatus::NullPointer, format!("{what} is NULL"))
 }
 
-/// Checks that `ptr` is a live handle of type `T`.
-fn check_live<T: Handle>(ptr: *const T) -> Res<()> {
-    if ptr.is_null() {
-        return Err(null(T::NAME));
-    }
-    match live().get(&key(ptr)) {
-        Some(&k) if k == T::KIND => Ok(()),
+/// Why `found` (the registry's entry for a handle of type `T`, if any) is not
+/// a live `T`, or `Ok`.
+fn verdict<T: Handle>(found: Option<Kind>) -> Res<()> {
+    match found {
+        Some(k) if k == T::KIND => Ok(()),
         Some(_) => Err(Failure::new(
             MbStatus::InvalidHandle,
             format!("the handle passed as {} is of another type", T::NAME),
@@ -93,6 +91,15 @@ fn check_live<T: Handle>(ptr: *const T) -> Res<()> {
             ),
         )),
     }
+}
+
+/// Checks that `ptr` is a live handle of type `T`.
+fn check_live<T: Handle>(ptr: *const T) -> Res<()> {
+    if ptr.is_null() {
+        return Err(null(T::NAME));
+    }
+    let found = live().get(&key(ptr)).copied();
+    verdict::<T>(found)
 }
 
 /// The value behind the handle `ptr`.
@@ -129,16 +136,11 @@ pub(crate) unsafe fn free_handle<T: Handle>(ptr: *mut T) -> Res<()> {
         return Ok(());
     }
     {
+        // Checked and removed under one write lock: no other call can free
+        // or re-register this address in between.
         let mut live = live_mut();
-        match live.get(&key(ptr)) {
-            Some(&k) if k == T::KIND => {
-                live.remove(&key(ptr));
-            }
-            _ => {
-                drop(live);
-                check_live(ptr)?;
-            }
-        }
+        verdict::<T>(live.get(&key(ptr)).copied())?;
+        live.remove(&key(ptr));
     }
     // SAFETY: the address was registered as a `T`, so it came from
     // `Box::into_raw` of a `T`; it was unregistered above under the write
