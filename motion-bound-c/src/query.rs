@@ -1,0 +1,315 @@
+//! The pair query: parameters, report, `mb_time_of_impact`.
+
+use motion_bound::ca::{
+    time_of_impact, AnyPair, BoundChoice, CaOutcome, CaParams, CaReport, ContactCriterion,
+    WitnessSearch, Work,
+};
+
+use crate::error::{guard, Failure, MbStatus, Res};
+use crate::motion::{MbMotion, MbVec3};
+use crate::ptr::{handle_ref, read_in, write_out, Plain};
+use crate::shape::MbShape;
+
+/// Which directed bound a query uses (`mb_params.bound`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MbBound {
+    /// EVQ wherever it costs `O(1)`; on a convex hull, NEVQ first and EVQ
+    /// only when NEVQ's step would not end the query (the default).
+    Auto = 0,
+    /// NEVQ everywhere: cheapest, loosest.
+    Nevq = 1,
+    /// EVQ everywhere: tightest.
+    Evq = 2,
+}
+
+/// Which pair within the contact distance a mesh contact reports as its
+/// witness (`mb_params.witness`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MbWitnessSearch {
+    /// The closest triangle pair at the contact time (the default).
+    Closest = 0,
+    /// The first pair found within the contact distance (less work).
+    First = 1,
+}
+
+/// The parameters of a query, a plain struct: start from
+/// `mb_params_default` and change fields. Checked by each query
+/// (`MB_STATUS_INVALID_PARAMETER` when out of range).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MbParams {
+    /// Contact is declared when the distance is at most this (positive and
+    /// finite, in the scene's length unit). Default `1e-4`: set it for your
+    /// scale.
+    pub contact_distance: f64,
+    /// A step at most this long (well before the end) ends the query with a
+    /// contact by time tolerance (finite, at least `0`). Default `1e-9`.
+    pub time_tolerance: f64,
+    /// The factor by which each step's horizon grows (`0`, or above `1`).
+    /// Default `2`.
+    pub horizon_factor: f64,
+    /// The most node pairs of a mesh traversal per query (default 50,000;
+    /// `UINT64_MAX` for no limit).
+    pub work_budget_node_pairs: u64,
+    /// The most triangle pairs of a mesh traversal per query (default
+    /// 10,000; `UINT64_MAX` for no limit).
+    pub work_budget_triangle_pairs: u64,
+    /// The most iterations for bodies that do not turn (at least `1`).
+    /// Default `100`.
+    pub max_iterations: u32,
+    /// Iterations added per full turn the two bodies make. Default `16`.
+    pub iterations_per_turn: u32,
+    /// An `mb_bound` value. Default `MB_BOUND_AUTO`.
+    pub bound: u32,
+    /// An `mb_witness_search` value. Default `MB_WITNESS_SEARCH_CLOSEST`.
+    pub witness: u32,
+    /// Nonzero: bound the closing rate with one-sided bounds (never looser).
+    /// Default `1`.
+    pub one_sided: u32,
+}
+
+// SAFETY: a `repr(C)` struct of `f64`, `u64` and `u32` fields (and padding):
+// every bit pattern of the fields is a value.
+unsafe impl Plain for MbParams {}
+
+/// What ended a query (`mb_report.outcome`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MbOutcome {
+    /// Contact at `time` (never later than the first time the surfaces
+    /// touch).
+    Contact = 0,
+    /// Already within the contact distance at the start (or one body starts
+    /// inside the other's solid mesh); `time` is the start.
+    InitialContact = 1,
+    /// No contact over the whole interval (certified).
+    Separated = 2,
+    /// Undecided from `time` on (the iteration limit); no contact before
+    /// `time`. Treat as a possible contact at `time`.
+    IterationLimit = 3,
+    /// Undecided from `time` on (the work budget ran out); no contact
+    /// before `time`. Treat as a possible contact at `time`.
+    WorkLimit = 4,
+    /// Undecided from `time` on (the contact distance is below what the
+    /// placement resolves: see `resolution`); no contact before `time`.
+    /// Treat as a possible contact at `time`.
+    PrecisionLimit = 5,
+}
+
+/// Which tolerance declared a contact (`mb_report.criterion`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MbCriterion {
+    /// No contact, or an initial contact.
+    None = 0,
+    /// The distance fell to the contact distance.
+    Distance = 1,
+    /// The certified steps stalled (a very fast or grazing approach): no
+    /// contact before `time`, and a contact may follow.
+    TimeTolerance = 2,
+}
+
+/// A query's answer. Fields that do not apply are NaN (`time` when
+/// separated; the witnesses, normal and distance when no closest points were
+/// measured; `resolution` except for a precision limit).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MbReport {
+    /// What ended the query.
+    pub outcome: MbOutcome,
+    /// Which tolerance declared a contact.
+    pub criterion: MbCriterion,
+    /// The contact time, or the safe time an undecided query reached; NaN
+    /// when separated.
+    pub time: f64,
+    /// The witness point on body A at `time` (world frame).
+    pub witness_a: MbVec3,
+    /// The witness point on body B at `time` (world frame).
+    pub witness_b: MbVec3,
+    /// The unit contact normal from A to B at `time`.
+    pub normal: MbVec3,
+    /// The distance between the witnesses.
+    pub distance: f64,
+    /// For a precision limit, the length the placement cannot resolve.
+    pub resolution: f64,
+    /// Node pairs a mesh traversal worked on.
+    pub node_pairs: u64,
+    /// Triangle pairs whose exact distance was computed.
+    pub triangle_pairs: u64,
+    /// Iterations used (at least one).
+    pub iterations: u32,
+}
+
+const NAN3: MbVec3 = MbVec3 {
+    x: f64::NAN,
+    y: f64::NAN,
+    z: f64::NAN,
+};
+
+impl MbReport {
+    pub(crate) fn of(report: &CaReport<f64>) -> Self {
+        let mut r = Self {
+            outcome: MbOutcome::Separated,
+            criterion: MbCriterion::None,
+            time: f64::NAN,
+            witness_a: NAN3,
+            witness_b: NAN3,
+            normal: NAN3,
+            distance: f64::NAN,
+            resolution: f64::NAN,
+            node_pairs: report.work.node_pairs,
+            triangle_pairs: report.work.triangle_pairs,
+            iterations: report.iterations,
+        };
+        let contact = match report.outcome {
+            CaOutcome::Contact { contact, criterion } => {
+                r.outcome = MbOutcome::Contact;
+                r.criterion = match criterion {
+                    ContactCriterion::Distance => MbCriterion::Distance,
+                    _ => MbCriterion::TimeTolerance,
+                };
+                Some(contact)
+            }
+            CaOutcome::InitialContact(contact) => {
+                r.outcome = MbOutcome::InitialContact;
+                Some(contact)
+            }
+            CaOutcome::Separated => None,
+            CaOutcome::WorkLimit { time } => {
+                r.outcome = MbOutcome::WorkLimit;
+                r.time = time;
+                None
+            }
+            CaOutcome::PrecisionLimit { time, resolution } => {
+                r.outcome = MbOutcome::PrecisionLimit;
+                r.time = time;
+                r.resolution = resolution;
+                None
+            }
+            // The iteration limit, and any future undecided outcome.
+            other => {
+                r.outcome = MbOutcome::IterationLimit;
+                r.time = other.earliest_possible_contact().unwrap_or(0.0);
+                None
+            }
+        };
+        if let Some(c) = contact {
+            r.time = c.time;
+            if let Some(w) = c.witness {
+                r.witness_a = MbVec3::from_array(w.on_a.to_array());
+                r.witness_b = MbVec3::from_array(w.on_b.to_array());
+                r.distance = w.distance;
+            }
+            if let Some(n) = c.normal {
+                r.normal = MbVec3::from_array(n.to_array());
+            }
+        }
+        r
+    }
+}
+
+/// The default parameters (those of the Rust crate's `CaParams::default`).
+///
+/// **Thread safety**: any thread.
+#[unsafe(no_mangle)]
+pub extern "C" fn mb_params_default() -> MbParams {
+    let d = CaParams::<f64>::default();
+    MbParams {
+        contact_distance: d.contact_distance,
+        time_tolerance: d.time_tolerance,
+        horizon_factor: d.horizon_factor,
+        work_budget_node_pairs: d.work_budget.node_pairs,
+        work_budget_triangle_pairs: d.work_budget.triangle_pairs,
+        max_iterations: d.max_iterations,
+        iterations_per_turn: d.iterations_per_turn,
+        bound: MbBound::Auto as u32,
+        witness: MbWitnessSearch::Closest as u32,
+        one_sided: u32::from(d.one_sided),
+    }
+}
+
+fn bad(what: &str) -> Failure {
+    Failure::new(MbStatus::InvalidParameter, what)
+}
+
+/// The crate's parameters of `p` (the defaults for `None`), checked.
+pub(crate) fn params(p: Option<MbParams>) -> Res<CaParams<f64>> {
+    let Some(p) = p else {
+        return Ok(CaParams::default());
+    };
+    let mut c = CaParams::<f64>::default()
+        .with_contact_distance(p.contact_distance)
+        .with_time_tolerance(p.time_tolerance)
+        .with_max_iterations(p.max_iterations)
+        .with_iterations_per_turn(p.iterations_per_turn)
+        .with_work_budget(Work::new(
+            p.work_budget_node_pairs,
+            p.work_budget_triangle_pairs,
+        ))
+        .with_witness(match p.witness {
+            0 => WitnessSearch::Closest,
+            1 => WitnessSearch::First,
+            _ => return Err(bad("witness: 0 (closest) or 1 (first)")),
+        })
+        .with_bound(match p.bound {
+            0 => BoundChoice::Auto,
+            1 => BoundChoice::Nevq,
+            2 => BoundChoice::Evq,
+            _ => return Err(bad("bound: 0 (auto), 1 (NEVQ) or 2 (EVQ)")),
+        });
+    c.horizon_factor = p.horizon_factor;
+    c.one_sided = p.one_sided != 0;
+    c.validate()?;
+    Ok(c)
+}
+
+/// The first time bodies of shapes `shape_a` and `shape_b`, moving by
+/// `motion_a` and `motion_b` (over the same interval), come within the
+/// contact distance, certified: the report's time is never later than the
+/// first time they touch under the exact motions. `params` may be `NULL`
+/// for the defaults. Every pair of shape kinds is taken (two half-spaces
+/// excepted: `MB_STATUS_QUERY_ERROR`). The report is written to `*out`.
+///
+/// `MB_STATUS_NULL_POINTER` / `MB_STATUS_INVALID_HANDLE` for a bad handle,
+/// `MB_STATUS_INVALID_PARAMETER` for parameters out of range,
+/// `MB_STATUS_QUERY_ERROR` for motions over different intervals or a
+/// turning half-space.
+///
+/// **Thread safety**: any thread; the shapes, motions and params may be
+/// shared by concurrent queries (each query has its own scratch space).
+///
+/// # Safety
+/// The handles are not freed during the call; `params` is `NULL` or valid
+/// for reading an `mb_params`; `out` is `NULL` or valid for writing an
+/// `mb_report`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn mb_time_of_impact(
+    shape_a: *const MbShape,
+    motion_a: *const MbMotion,
+    shape_b: *const MbShape,
+    motion_b: *const MbMotion,
+    params: *const MbParams,
+    out: *mut MbReport,
+) -> MbStatus {
+    guard(|| {
+        // SAFETY: the handles are not freed during the call, and `params` is
+        // NULL or readable (this function's contract).
+        let (sa, ma, sb, mb, p) = unsafe {
+            (
+                handle_ref(shape_a)?,
+                handle_ref(motion_a)?,
+                handle_ref(shape_b)?,
+                handle_ref(motion_b)?,
+                read_in(params, "params")?,
+            )
+        };
+        let p = self::params(p)?;
+        let (pa, pb) = (sa.data.prepare()?, sb.data.prepare()?);
+        let mut pair = AnyPair::try_new(pa.shape(), pb.shape())?;
+        let report = time_of_impact(&mut pair, &ma.motion, &mb.motion, &p)?;
+        // SAFETY: `out` is NULL or writable (this function's contract).
+        unsafe { write_out(out, MbReport::of(&report), "out") }
+    })
+}
