@@ -3,12 +3,15 @@ query in a process is about ten times slower than the next"). Each process build
 then times the same mesh-against-mesh query twice; the minimum over a few fresh processes of
 each is compared, so that one process descheduled on a busy machine does not decide.
 
-Where the time went, measured for this test: nothing in the module is built lazily (a mesh's
-ball tree, its hierarchy of pieces included, is built by `mesh`); a µs-scale query (the README's
-ball past a tetrahedron, 6 µs warm) takes 20 to 40 µs when first, and as long again whenever
-other work (a numpy sort of 4 million numbers) has pushed the query's code and data out of the
-caches: cold caches, not first-time work. A mesh query of a realistic size pays that once, well
-within the factor of two checked here."""
+Where the ten times went, measured for this test: nothing in the module or the crate is built
+lazily (a mesh's ball tree, its hierarchy of pieces included, is built by `mesh`; no OnceCell,
+no cache), and a query starts no thread. A µs-scale query (the README's ball past a tetrahedron,
+6 µs warm) took 25 to 50 µs when first in its process, and 32 to 80 µs again, after it had run,
+once a numpy sort of 4 million numbers had pushed the query's code and data out of the caches:
+cold caches, not first-time work. Running tiny queries at import changed nothing measurable
+(the user's own numpy work evicts them again), so there is none. A mesh query of a realistic
+size (0.3 to 1 ms) pays those tens of µs once: 1.2 to 1.4 times the second, within the factor
+of two checked here."""
 
 import subprocess
 import sys
