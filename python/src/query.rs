@@ -9,6 +9,7 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 use rayon::prelude::*;
+use std::time::Instant;
 
 use crate::arrays::{floats, index, to_numpy};
 use crate::body::Body;
@@ -417,13 +418,39 @@ impl<'a> Many<'a> {
     }
 }
 
+/// The wall time one chunk of a batch aims at: between chunks the calling
+/// thread takes the GIL back, runs Python's signal handlers (Ctrl-C) and the
+/// progress callback, so a chunk must be well under the tenth of a second in
+/// which Ctrl-C is to be honoured, and long enough that the pause (a few
+/// microseconds) and rayon's idle tail at the end of a chunk cost nothing.
+const CHUNK_SECONDS: f64 = 0.02;
+
+/// The next chunk's length from the last one's: as many queries as fit in
+/// `CHUNK_SECONDS` at the last chunk's pace, at most four times the last
+/// length (the next queries may be slower), at least one query per thread.
+fn next_chunk(last: usize, seconds: f64, threads: usize) -> usize {
+    let per_query = seconds / last as f64;
+    let fit = if per_query > 0.0 {
+        (CHUNK_SECONDS / per_query).min(usize::MAX as f64) as usize
+    } else {
+        usize::MAX
+    };
+    fit.min(last.saturating_mul(4)).max(threads)
+}
+
 /// Many queries of the same two bodies: `motions_a` and `motions_b` are each
 /// a `MotionBatch` (one motion per query, the same length) or a `Motion`
 /// (the same for every query). Runs on every core (rayon) with the GIL
 /// released; answers as a `BatchReport`, in query order, the same as one
 /// `time_of_impact` per query.
+///
+/// The batch runs in chunks of about 20 ms; between chunks the calling
+/// thread checks for Ctrl-C (a `KeyboardInterrupt` is raised within a tenth
+/// of a second, the answers so far dropped) and calls `progress(done,
+/// total)` when given (with the GIL, from the calling thread; counts
+/// increase and end at `total`; an exception it raises stops the batch).
 #[pyfunction]
-#[pyo3(signature = (a, motions_a, b, motions_b, contact_distance = 1e-4, tolerance = 1e-9, max_iterations = 100, parallel = true))]
+#[pyo3(signature = (a, motions_a, b, motions_b, contact_distance = 1e-4, tolerance = 1e-9, max_iterations = 100, parallel = true, progress = None))]
 #[allow(clippy::too_many_arguments)]
 fn time_of_impact_batch(
     py: Python<'_>,
@@ -435,10 +462,18 @@ fn time_of_impact_batch(
     tolerance: f64,
     max_iterations: i64,
     parallel: bool,
+    progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<BatchReport> {
     let p = params(contact_distance, tolerance, max_iterations)?;
     let ma = Many::of(motions_a, "motions_a")?;
     let mb = Many::of(motions_b, "motions_b")?;
+    if let Some(cb) = progress {
+        if !cb.is_callable() {
+            return Err(PyTypeError::new_err(
+                "progress must be callable as progress(done, total)",
+            ));
+        }
+    }
     let n = match (ma.len(), mb.len()) {
         (Some(x), Some(y)) if x != y => {
             return Err(PyValueError::new_err(format!(
@@ -449,19 +484,44 @@ fn time_of_impact_batch(
         (None, None) => 1,
     };
     let (ba, bb) = (a.get(), b.get());
-    let flats = py.detach(|| -> PyResult<Vec<Flat>> {
-        let (pa, pb) = (ba.prepare()?, bb.prepare()?);
-        let one = |ws: &mut Option<MeshWorkspace<f64>>, i: usize| {
-            run(&pa, &pb, ma.get(i), mb.get(i), &p, ws)
-        };
-        let out: Result<Vec<Flat>, _> = if parallel {
-            (0..n).into_par_iter().map_init(|| None, one).collect()
-        } else {
-            let mut ws = None;
-            (0..n).map(|i| one(&mut ws, i)).collect()
-        };
-        out.map_err(|e| pair_error(e, (ba.kind_name(), bb.kind_name())))
-    })?;
+    let (pa, pb) = py.detach(|| -> PyResult<_> { Ok((ba.prepare()?, bb.prepare()?)) })?;
+    let threads = if parallel {
+        rayon::current_num_threads()
+    } else {
+        1
+    };
+    let mut flats: Vec<Flat> = Vec::with_capacity(n);
+    // The serial batch's workspace lives across chunks, as it did when the
+    // batch was one loop.
+    let mut serial_ws = None;
+    let mut chunk = threads;
+    while flats.len() < n {
+        let (lo, hi) = (flats.len(), (flats.len() + chunk).min(n));
+        let clock = Instant::now();
+        py.detach(|| -> PyResult<()> {
+            let one = |ws: &mut Option<MeshWorkspace<f64>>, i: usize| {
+                run(&pa, &pb, ma.get(i), mb.get(i), &p, ws)
+            };
+            if parallel {
+                let out: Result<Vec<Flat>, _> =
+                    (lo..hi).into_par_iter().map_init(|| None, one).collect();
+                flats.extend(out.map_err(|e| pair_error(e, (ba.kind_name(), bb.kind_name())))?);
+            } else {
+                for i in lo..hi {
+                    flats.push(
+                        one(&mut serial_ws, i)
+                            .map_err(|e| pair_error(e, (ba.kind_name(), bb.kind_name())))?,
+                    );
+                }
+            }
+            Ok(())
+        })?;
+        chunk = next_chunk(hi - lo, clock.elapsed().as_secs_f64(), threads);
+        py.check_signals()?;
+        if let Some(cb) = progress {
+            cb.call1((hi, n))?;
+        }
+    }
     Ok(BatchReport { flats })
 }
 
