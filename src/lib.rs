@@ -1,14 +1,112 @@
 //! # motion-bound
 //!
-//! Verified directed motion bounds for conservative-advancement (CA)
-//! continuous collision detection of rigid bodies.
+//! Certified continuous collision detection of rigid bodies: the first time
+//! of contact of two moving bodies by conservative advancement (CA), never
+//! later than the first touch and never missed, with the rounding of every
+//! step accounted for. CA steps time forward by `d / mu`, `d` the bodies'
+//! distance and `mu` an upper bound of how fast any point approaches along
+//! the closest direction; this crate computes such bounds ([NEVQ and
+//! EVQ](#the-bounds-nevq-and-evq)), proves them, and drives CA with them for
+//! every kind of shape an engine has.
 //!
-//! Conservative advancement finds the first time of contact of two moving
-//! bodies by repeatedly stepping time forward by `d / mu`, where `d` is their
-//! distance and `mu` bounds how fast any point of the moving body can
-//! approach along the closest direction `n`. This crate computes such `mu`,
-//! following Zhang, Lee and Kim's erratum "Computation of the Upper Bound of
-//! Motion" (2006) to *Interactive continuous collision detection for
+//! ## Time of impact of two shapes
+//!
+//! A body is a [`ca::Shape`] in its own frame: a [`Convex`] shape (ball,
+//! capsule, cuboid, cylinder, cone, polytope, rounded or not), a
+//! [`VertexSet`], a [`BoundingBall`], a triangle mesh through its
+//! [`BallTree`], a [`HalfSpace`] or a [`ca::Compound`] of these. A motion is
+//! its pose at `t = 0` with constant linear and angular velocity over an
+//! interval ([`RigidMotion`]). [`ca::AnyPair`] picks the stepper for any two
+//! shapes and [`ca::time_of_impact`] runs CA with it:
+//!
+//! ```
+//! use motion_bound::ca::{time_of_impact, AnyPair, CaOutcome, CaParams, Shape};
+//! use motion_bound::{BallTree, Convex, RigidMotion, TriMesh};
+//!
+//! // A tetrahedron, its tree built once in its own frame, standing still.
+//! let tet = TriMesh::try_new(
+//!     vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
+//!     vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
+//! )?;
+//! let tree = BallTree::try_from_mesh(&tet)?;
+//! let still = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3])?;
+//! // A board (half extents 0.5, 0.1, 0.3) flung at it along +x over [0, 1],
+//! // spinning about z at 3 rad per unit time.
+//! let board = Convex::try_cuboid([0.5, 0.1, 0.3])?;
+//! let flung = RigidMotion::try_from_arrays([-3.0, 0.2, 0.2], [4.0, 0.0, 0.0], [0.0, 0.0, 3.0])?;
+//!
+//! let mut pair = AnyPair::try_new(Shape::Convex(board), Shape::Mesh(&tree))?;
+//! let report = time_of_impact(&mut pair, &flung, &still, &CaParams::default())?;
+//! match report.outcome {
+//!     // Whatever its angle, the board reaches at most |(0.5, 0.1, 0.3)| < 0.6
+//!     // and at least 0.1 from its centre: it cannot meet the tetrahedron's
+//!     // face x = 0 before its centre passes x = -0.6 (t = 2.4 / 4), and it
+//!     // touches that face by the time its centre reaches x = -0.1 (t = 2.9 / 4).
+//!     CaOutcome::Contact { contact, .. } => {
+//!         assert!(contact.time > 2.4 / 4.0 && contact.time <= 2.9 / 4.0)
+//!     }
+//!     other => panic!("expected a contact, got {other:?}"),
+//! }
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! Outcomes: a [`Contact`](ca::CaOutcome::Contact) (with the time, the
+//! witness points and the normal), an
+//! [`InitialContact`](ca::CaOutcome::InitialContact), a certified
+//! [`Separated`](ca::CaOutcome::Separated), or a possible contact at the time
+//! reached ([`ca::CaOutcome::IterationLimit`],
+//! [`ca::CaOutcome::WorkLimit`], [`ca::CaOutcome::PrecisionLimit`]), never a
+//! miss. A contact is never later than the first time the surfaces come
+//! within half the contact distance ([`proofs::ca_toi`]). Every query runs in
+//! the pair's own frame (the world translated to body A's start), so its
+//! precision does not depend on where the pair is, and its work is bounded
+//! ([`ca::CaParams::work_budget`]). A contact's witness is the closest
+//! triangle pair ([`ca::WitnessSearch`]).
+//!
+//! Each pair of kinds has its stepper, which [`ca::AnyPair`] picks: two
+//! meshes through their ball trees ([`ca::MeshPair`]), a mesh and a convex
+//! shape or half-space ([`ca::MeshConvexPair`]), convex vertex sets with GJK
+//! or an engine's own distance oracle ([`ca::VertexSetPair`]), two balls
+//! ([`ca::BallPair`]), two convex shapes ([`ca::ConvexPair`]), a convex shape
+//! and a half-space ([`ca::HalfSpacePair`]). Build one directly to tune it,
+//! or implement [`ca::CaStep`] for your own geometry. In an engine loop, make
+//! each frame's motions with [`RigidMotion::try_about_centre`] or
+//! [`RigidMotion::try_between`] and keep one [`ca::MeshWorkspace`]: a steady
+//! loop then allocates nothing.
+//!
+//! ## Scenes
+//!
+//! [`scene::Scene`] holds many bodies of any kinds over one frame and answers
+//! every pair's first contact at once, after a certified broad phase (each
+//! body's [`scene::SweptBox`], a sweep and prune) that skips what cannot
+//! touch; the skips are proved in [`proofs::scene`] and counted in
+//! [`scene::SceneStats`]. With the feature `parallel`,
+//! [`Scene::par_query`][par-query] runs the narrow phase on every core. See the [`scene`] module.
+//!
+//! ```
+//! use motion_bound::ca::Shape;
+//! use motion_bound::scene::{Scene, SceneParams, SceneWorkspace};
+//! use motion_bound::{Convex, HalfSpace, Isometry, RigidMotion, TimeInterval, Vec3};
+//!
+//! let mut scene = Scene::try_new(TimeInterval::try_new(0.0, 1.0)?)?;
+//! let ground = Shape::HalfSpace(HalfSpace::try_new(Vec3::new(0.0, 1.0, 0.0))?);
+//! let ball = Shape::Convex(Convex::try_ball(0.5)?);
+//! scene.try_add_static(ground, Isometry::try_from_translation(Vec3::new(0.0, 0.0, 0.0))?)?;
+//! // A ball falling from y = 2.5 at 4 per unit time, and one far off drifting sideways.
+//! let falling = scene.try_add(ball, RigidMotion::try_from_arrays([0.0, 2.5, 0.0], [0.0, -4.0, 0.0], [0.0; 3])?)?;
+//! scene.try_add(ball, RigidMotion::try_from_arrays([50.0, 20.0, 0.0], [1.0, 0.0, 0.0], [0.0; 3])?)?;
+//! let mut ws = SceneWorkspace::new();
+//! let report = scene.query(&mut ws, &SceneParams::default())?;
+//! // The falling ball's lowest point reaches the ground at t = 2 / 4.
+//! let (t, _ground) = report.earliest_for(falling).expect("it lands");
+//! assert!(t <= 0.5 && t > 0.5 - 1e-4);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+//!
+//! ## The bounds: NEVQ and EVQ
+//!
+//! Both follow Zhang, Lee and Kim's erratum "Computation of the Upper Bound
+//! of Motion" (2006) to *Interactive continuous collision detection for
 //! non-convex polyhedra* (The Visual Computer 23, 2007,
 //! [doi:10.1007/s00371-007-0172-y](https://doi.org/10.1007/s00371-007-0172-y)):
 //!
@@ -21,7 +119,7 @@
 //! Eq. 2 is not a valid bound: [`proofs::evq_case_split`] says where and
 //! why), is an upper bound for its floating-point inputs with rounding
 //! accounted for ([`proofs::floating_point`]), and is checked by property
-//! tests against an exact closed-form [`reference`](mod@reference).
+//! tests against an exact closed-form [`reference`][reference-mod].
 //!
 //! ```
 //! use motion_bound::{evq, nevq, Direction, RigidMotion, Vec3, VertexSet};
@@ -51,55 +149,6 @@
 //! assert!(evq(&body, &rest, n).speed <= tight.speed);
 //! # Ok::<(), motion_bound::InputError>(())
 //! ```
-//!
-//! ## Time of impact
-//!
-//! [`ca::time_of_impact`] runs conservative advancement with a stepper: two
-//! meshes through their ball trees ([`ca::MeshPair`]), convex vertex sets with
-//! GJK or an engine's own distance oracle ([`ca::VertexSetPair`]), two balls
-//! ([`ca::BallPair`]), or a caller's [`ca::CaStep`]. A body's points and its
-//! [`BallTree`] are built once, in its own frame; each query hands over the
-//! bodies' motions from their start poses.
-//!
-//! ```
-//! use motion_bound::ca::{time_of_impact, CaOutcome, CaParams, MeshPair};
-//! use motion_bound::{BallTree, Isometry, RigidMotion, Rotation, TriMesh, Vec3};
-//! // A tetrahedron, built once in its own frame.
-//! let tet = TriMesh::try_new(
-//!     vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]],
-//!     vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
-//! )?;
-//! let tree = BallTree::try_from_mesh(&tet)?;
-//! // A turned copy flies at a still one over one frame of length 1.
-//! let turned = Rotation::try_from_axis_angle(Vec3::new(1.0, 1.0, 0.0), 0.7)?;
-//! let start = Isometry::try_new(turned, Vec3::new(-3.0, 0.2, 0.0))?;
-//! let a = RigidMotion::try_from_start(start, Vec3::new(4.0, 0.0, 0.0), Vec3::new(0.0, 2.0, 1.0), 1.0)?;
-//! let b = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3])?;
-//! let report = time_of_impact(&mut MeshPair::new(&tree, &tree), &a, &b, &CaParams::default())?;
-//! match report.outcome {
-//!     // Never later than the first time the surfaces come within half the
-//!     // contact distance (`proofs::ca_toi`).
-//!     CaOutcome::Contact { contact, .. } => assert!(contact.time > 0.0 && contact.time < 1.0),
-//!     other => panic!("expected a contact, got {other:?}"),
-//! }
-//! # Ok::<(), Box<dyn std::error::Error>>(())
-//! ```
-//!
-//! Every query runs in the pair's own frame (the world translated to body
-//! A's start), so its precision does not depend on where the pair is; its
-//! work is bounded ([`ca::CaParams::work_budget`]); and an undecided query
-//! says why ([`ca::CaOutcome::IterationLimit`], [`ca::CaOutcome::WorkLimit`],
-//! [`ca::CaOutcome::PrecisionLimit`]), always with a time before which no
-//! contact is certified. A contact's witness is the closest triangle pair
-//! ([`ca::WitnessSearch`]).
-//!
-//! ## Scenes
-//!
-//! [`scene::Scene`] holds many bodies over one frame and answers every
-//! pair's first contact at once, after a certified broad phase (each body's
-//! [`scene::SweptBox`], a sweep and prune) that skips what cannot touch; the
-//! skips are proved in [`proofs::scene`] and counted in
-//! [`scene::SceneStats`]. See the [`scene`] module.
 //!
 //! ## Robot arms
 //!
@@ -165,22 +214,48 @@
 //! | `std` | yes | float functions from `std`; implies `alloc` |
 //! | `libm` | no | float functions from `libm`; with `std` off the crate is `#![no_std]` (and allocation-free unless `alloc` is on) |
 //! | `alloc` | with `std` | owned meshes ([`TriMesh`]), ball trees ([`BallTree`]), the mesh stepper, chains ([`chain`]), OFF and STL input, OFF output; needs no `std` |
-//! | `bodies` | no | built-in test bodies ([`bodies`]): the seed's torus knots, tori, boards, boxes, icospheres (`scenes`, its old name, still turns it on) |
+//! | `bodies` | no | built-in test bodies ([`bodies`][bodies-mod]): the seed's torus knots, tori, boards, boxes, icospheres (`scenes`, its old name, still turns it on) |
 //! | `obj` | no | OBJ input with `tobj` (`TriMesh::from_obj_str`); implies `std` and `alloc` |
 //! | `urdf` | no | chains from URDF files (`Chain::from_urdf_file`, with `urdf-rs`), their meshes as OBJ or STL; implies `obj` |
 //! | `mint` | no | conversions to and from `mint` vectors, points and quaternions (glam, nalgebra and cgmath interop) |
 //! | `approx` | no | `approx` comparison traits on the public vector types |
-//! | `reference` | no | **test support**: the exact closed-form oracle ([`reference`](mod@reference)) |
+//! | `reference` | no | **test support**: the exact closed-form oracle ([`reference`][reference-mod]) |
 //! | `faer` | no | **test support**: batched dense sampling of the oracle with faer |
-//! | `testkit` | no | **test support**: hard-case generators, the time-of-impact ground truth, the Table 1 scenes ([`testkit`]) |
-//! | `parallel` | no | [`Scene::par_query`](scene::Scene::par_query): a scene's narrow phase on every core (rayon); implies `std` |
+//! | `testkit` | no | **test support**: hard-case generators, the time-of-impact ground truth, the Table 1 scenes ([`testkit`][testkit-mod]) |
+//! | `parallel` | no | [`Scene::par_query`][par-query]: a scene's narrow phase on every core (rayon); implies `std` |
 //! | `arbitrary` | no | **test support**: `Arbitrary` case descriptions for `cargo fuzz` |
 //!
 //! The core's one dependency is [robust](https://crates.io/crates/robust)
 //! (Shewchuk's adaptive predicates, `no_std` and allocation-free): the exact
 //! fallback of the filtered orientation predicates with which
 //! [`try_triangle_triangle`] decides meeting.
+//!
 
+// The links to items behind features: to the item when the feature is on, else to docs.rs
+// (built with every feature), so that `cargo doc` has no broken link under any feature set.
+#![cfg_attr(feature = "bodies", doc = "[bodies-mod]: crate::bodies")]
+#![cfg_attr(
+    not(feature = "bodies"),
+    doc = "[bodies-mod]: https://docs.rs/motion-bound/latest/motion_bound/bodies/index.html"
+)]
+#![cfg_attr(feature = "reference", doc = "[reference-mod]: mod@crate::reference")]
+#![cfg_attr(
+    not(feature = "reference"),
+    doc = "[reference-mod]: https://docs.rs/motion-bound/latest/motion_bound/reference/index.html"
+)]
+#![cfg_attr(feature = "testkit", doc = "[testkit-mod]: crate::testkit")]
+#![cfg_attr(
+    not(feature = "testkit"),
+    doc = "[testkit-mod]: https://docs.rs/motion-bound/latest/motion_bound/testkit/index.html"
+)]
+#![cfg_attr(
+    feature = "parallel",
+    doc = "[par-query]: crate::scene::Scene::par_query"
+)]
+#![cfg_attr(
+    not(feature = "parallel"),
+    doc = "[par-query]: https://docs.rs/motion-bound/latest/motion_bound/scene/struct.Scene.html#method.par_query"
+)]
 #![cfg_attr(not(feature = "std"), no_std)]
 #![cfg_attr(docsrs, feature(doc_cfg))]
 #![forbid(unsafe_code)]

@@ -5,6 +5,10 @@
 //! workspace. Not a source of randomness for anything but reproducible
 //! test cases.
 
+// Without the testkit (the crate's own unit tests under the default features) this is private
+// to the crate and only part of it is used.
+#![cfg_attr(not(feature = "testkit"), allow(dead_code, unreachable_pub))]
+
 /// A deterministic generator (Vigna's SplitMix64): the same sequence for the
 /// same seed on every platform, so a failing case reproduces.
 ///

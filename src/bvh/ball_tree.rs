@@ -148,12 +148,15 @@ impl<T: Float> BallTree<T> {
     /// the mesh's triangles.
     ///
     /// ```
+    /// // `bodies`: the built-in test bodies (feature `bodies`).
+    /// # #[cfg(feature = "bodies")] {
     /// use motion_bound::{bodies, BallTree};
     /// let board = bodies::board::<f64>(2.0, 2.0, 0.002)?;
     /// let cut = BallTree::try_with_piece_length(board.vertices(), board.triangles(), 0.05)?;
     /// let whole = BallTree::try_with_piece_length(board.vertices(), board.triangles(), f64::INFINITY)?;
     /// assert_eq!((cut.triangle_count(), whole.triangle_count()), (12, 12));
     /// assert!(cut.piece_leaf_count() > 100 && whole.piece_leaf_count() == 0);
+    /// # }
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     ///
@@ -255,10 +258,13 @@ impl<T: Float> BallTree<T> {
     /// exceeds [`Float::MAX_INPUT`].
     ///
     /// ```
+    /// // `bodies`: the built-in test bodies (feature `bodies`).
+    /// # #[cfg(feature = "bodies")] {
     /// use motion_bound::{bodies, BallTree};
     /// let mesh = bodies::torus::<f64>(1.0, 0.25, 24, 12).unwrap();
     /// let tree = BallTree::try_from_mesh(&mesh).unwrap();
     /// assert_eq!(tree.triangle_count(), mesh.triangle_count());
+    /// # }
     /// ```
     pub fn try_from_mesh(mesh: &crate::TriMesh<T>) -> Result<Self, InputError> {
         let mut tree = Self::try_new(mesh.vertices(), mesh.triangles())?;

@@ -44,6 +44,8 @@ enum Other<'a, T> {
 /// of it is stale against the last step's length.
 ///
 /// ```
+/// // `bodies`: the built-in test bodies (feature `bodies`).
+/// # #[cfg(feature = "bodies")] {
 /// use motion_bound::ca::{time_of_impact, CaParams, MeshConvexPair};
 /// use motion_bound::{bodies, BallTree, Convex, HalfSpace, RigidMotion, Vec3};
 /// let ring = BallTree::try_from_mesh(&bodies::torus::<f64>(0.5, 0.1, 24, 8)?)?;
@@ -61,6 +63,7 @@ enum Other<'a, T> {
 /// let report = time_of_impact(&mut MeshConvexPair::with_half_space(&ring, ground), &dropped, &still, &CaParams::default())?;
 /// let t = report.outcome.contact().expect("it lands").time;
 /// assert!(t <= 0.45 && t > 0.45 - 1e-4, "t = {t}");
+/// # }
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug)]

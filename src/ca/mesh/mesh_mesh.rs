@@ -133,12 +133,15 @@ impl<'a, T: Float> MeshPair<'a, T> {
     /// ([`MeshParams::validate`]).
     ///
     /// ```
+    /// // `bodies`: the built-in test bodies (feature `bodies`).
+    /// # #[cfg(feature = "bodies")] {
     /// use motion_bound::ca::{CaError, MeshPair, MeshParams, Parameter};
     /// use motion_bound::{bodies, BallTree};
     /// let tree = BallTree::try_from_mesh(&bodies::torus::<f64>(0.5, 0.1, 16, 8)?)?;
     /// let pair = MeshPair::new(&tree, &tree).try_with_params(MeshParams::default().with_far_ratio(f64::INFINITY))?;
     /// let bad = MeshPair::new(&tree, &tree).try_with_params(MeshParams::default().with_accept_fraction(1.5));
     /// assert_eq!(bad.err(), Some(CaError::InvalidParameter(Parameter::AcceptFraction)));
+    /// # }
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     pub fn try_with_params(mut self, params: MeshParams<T>) -> Result<Self, CaError> {
@@ -163,12 +166,15 @@ impl<'a, T: Float> MeshPair<'a, T> {
     /// leaf ball is more than four times the other mesh's median one.
     ///
     /// ```
+    /// // `bodies`: the built-in test bodies (feature `bodies`).
+    /// # #[cfg(feature = "bodies")] {
     /// use motion_bound::ca::MeshPair;
     /// use motion_bound::{bodies, BallTree};
     /// let board = BallTree::try_from_mesh(&bodies::board::<f64>(2.0, 2.0, 0.002)?)?;
     /// let ball = BallTree::try_from_mesh(&bodies::icosphere::<f64>(0.3, 3)?)?;
     /// assert_eq!(MeshPair::new(&board, &ball).pieces_in_use(), (true, false));
     /// assert_eq!(MeshPair::new(&board, &board).pieces_in_use(), (false, false));
+    /// # }
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     #[must_use]

@@ -25,6 +25,8 @@ use crate::Float;
 /// ignores the front in it, so any workspace is sound for any pair.
 ///
 /// ```
+/// // `bodies`: the built-in test bodies (feature `bodies`).
+/// # #[cfg(feature = "bodies")] {
 /// use motion_bound::ca::{time_of_impact, CaParams, MeshPair, MeshWorkspace};
 /// use motion_bound::{bodies, BallTree, RigidMotion};
 /// let ring = bodies::torus::<f64>(0.5, 0.1, 16, 8)?;
@@ -38,6 +40,7 @@ use crate::Float;
 ///     workspace = pair.into_workspace();
 ///     assert_eq!(report.outcome.contact().is_some(), frame >= 1);
 /// }
+/// # }
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Debug)]
