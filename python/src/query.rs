@@ -5,7 +5,7 @@ use motion_bound::ca::{
     time_of_impact as toi, AnyPair, CaOutcome, CaParams, CaReport, MeshWorkspace,
 };
 use motion_bound::RigidMotion;
-use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 use rayon::prelude::*;
@@ -269,12 +269,40 @@ impl Report {
     }
 }
 
+/// `max_iterations` as Python gave it: an int beyond `i64` is kept as its
+/// text, so that [`params`] refuses it naming the argument (pyo3's own
+/// conversion would raise a bare `OverflowError`); what is not an int is a
+/// `TypeError` naming it.
+pub(crate) struct Iterations(Result<i64, String>);
+
+impl Iterations {
+    /// The default iteration limit, 100 (the signatures' text says so).
+    pub(crate) const DEFAULT: Self = Self(Ok(100));
+}
+
+impl<'a, 'py> FromPyObject<'a, 'py> for Iterations {
+    type Error = PyErr;
+
+    fn extract(obj: Borrowed<'a, 'py, PyAny>) -> PyResult<Self> {
+        match obj.extract::<i64>() {
+            Ok(k) => Ok(Self(Ok(k))),
+            Err(e) if e.is_instance_of::<PyOverflowError>(obj.py()) => {
+                Ok(Self(Err(obj.str()?.to_string())))
+            }
+            Err(_) => Err(PyTypeError::new_err(format!(
+                "max_iterations must be an int (got {})",
+                obj.get_type().name()?
+            ))),
+        }
+    }
+}
+
 /// The query parameters from the keyword arguments, each checked here so
 /// that an error names it as Python spells it.
 pub(crate) fn params(
     contact_distance: f64,
     tolerance: f64,
-    max_iterations: i64,
+    max_iterations: Iterations,
 ) -> PyResult<CaParams<f64>> {
     if !(contact_distance.is_finite() && contact_distance > 0.0) {
         return Err(crate::errors::QueryError::new_err(format!(
@@ -286,12 +314,17 @@ pub(crate) fn params(
             "tolerance must be finite and at least 0 (got {tolerance})"
         )));
     }
-    let max_iterations = u32::try_from(max_iterations)
-        .ok()
-        .filter(|&k| k >= 1)
-        .ok_or_else(|| {
+    let max_iterations = max_iterations
+        .0
+        .and_then(|k| {
+            u32::try_from(k)
+                .ok()
+                .filter(|&k| k >= 1)
+                .ok_or_else(|| k.to_string())
+        })
+        .map_err(|got| {
             crate::errors::QueryError::new_err(format!(
-                "max_iterations must be an integer in 1..={} (got {max_iterations})",
+                "max_iterations must be an integer in 1..={} (got {got})",
                 u32::MAX
             ))
         })?;
@@ -360,7 +393,10 @@ fn run(
 /// Raises `QueryError` for parameters out of range or motions over different
 /// intervals, a turning half-space or two half-spaces.
 #[pyfunction]
-#[pyo3(signature = (a, motion_a, b, motion_b, contact_distance = 1e-4, tolerance = 1e-9, max_iterations = 100))]
+#[pyo3(
+    signature = (a, motion_a, b, motion_b, contact_distance = 1e-4, tolerance = 1e-9, max_iterations = Iterations::DEFAULT),
+    text_signature = "(a, motion_a, b, motion_b, contact_distance=1e-4, tolerance=1e-9, max_iterations=100)"
+)]
 #[allow(clippy::too_many_arguments)]
 fn time_of_impact(
     py: Python<'_>,
@@ -370,7 +406,7 @@ fn time_of_impact(
     motion_b: &Bound<'_, Motion>,
     contact_distance: f64,
     tolerance: f64,
-    max_iterations: i64,
+    max_iterations: Iterations,
 ) -> PyResult<Report> {
     let p = params(contact_distance, tolerance, max_iterations)?;
     let (ba, bb) = (a.get(), b.get());
@@ -450,7 +486,10 @@ fn next_chunk(last: usize, seconds: f64, threads: usize) -> usize {
 /// total)` when given (with the GIL, from the calling thread; counts
 /// increase and end at `total`; an exception it raises stops the batch).
 #[pyfunction]
-#[pyo3(signature = (a, motions_a, b, motions_b, contact_distance = 1e-4, tolerance = 1e-9, max_iterations = 100, parallel = true, progress = None))]
+#[pyo3(
+    signature = (a, motions_a, b, motions_b, contact_distance = 1e-4, tolerance = 1e-9, max_iterations = Iterations::DEFAULT, parallel = true, progress = None),
+    text_signature = "(a, motions_a, b, motions_b, contact_distance=1e-4, tolerance=1e-9, max_iterations=100, parallel=True, progress=None)"
+)]
 #[allow(clippy::too_many_arguments)]
 fn time_of_impact_batch(
     py: Python<'_>,
@@ -460,7 +499,7 @@ fn time_of_impact_batch(
     motions_b: &Bound<'_, PyAny>,
     contact_distance: f64,
     tolerance: f64,
-    max_iterations: i64,
+    max_iterations: Iterations,
     parallel: bool,
     progress: Option<&Bound<'_, PyAny>>,
 ) -> PyResult<BatchReport> {

@@ -95,13 +95,16 @@ impl Scene {
     /// Every pair's first contact: a list of `(i, j, Report)`. On every
     /// core by default (`parallel=True`); `parallel=False` runs on one, with
     /// the same answers bit for bit.
-    #[pyo3(signature = (contact_distance = 1e-4, tolerance = 1e-9, max_iterations = 100, parallel = true))]
+    #[pyo3(
+        signature = (contact_distance = 1e-4, tolerance = 1e-9, max_iterations = crate::query::Iterations::DEFAULT, parallel = true),
+        text_signature = "($self, contact_distance=1e-4, tolerance=1e-9, max_iterations=100, parallel=True)"
+    )]
     fn query(
         &mut self,
         py: Python<'_>,
         contact_distance: f64,
         tolerance: f64,
-        max_iterations: i64,
+        max_iterations: crate::query::Iterations,
         parallel: bool,
     ) -> PyResult<Vec<(usize, usize, Report)>> {
         let p =
