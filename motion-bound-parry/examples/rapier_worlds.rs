@@ -142,16 +142,20 @@ pub(crate) enum World {
     Mesh,
     /// A spinning cylinder or cone at a thin wall.
     Cylinder,
+    /// Twenty small spinning balls and boxes at about 200 m/s at a thin
+    /// wall (issue 40's wall world).
+    Swarm,
 }
 
 impl World {
     /// Every world, in the order printed.
-    pub(crate) const ALL: [Self; 5] = [
+    pub(crate) const ALL: [Self; 6] = [
         Self::Board,
         Self::Bullets,
         Self::Plate,
         Self::Mesh,
         Self::Cylinder,
+        Self::Swarm,
     ];
 
     /// The world's short name.
@@ -162,6 +166,7 @@ impl World {
             Self::Plate => "plate",
             Self::Mesh => "mesh",
             Self::Cylinder => "cylinder",
+            Self::Swarm => "swarm",
         }
     }
 }
@@ -354,6 +359,26 @@ fn build(world: World, seed: u64) -> Vec<Spec> {
                     unit(&mut r) * r.range(20.0, 80.0),
                 ),
             ]
+        }
+        World::Swarm => {
+            // A 4 x 5 grid across the wall, 1.4 apart, each cell jittered by
+            // 0.3: no two bodies start near each other.
+            let mut specs = vec![wall(0.02, 4.0)];
+            for k in 0..20 {
+                let shape = if k % 2 == 0 {
+                    SharedShape::ball(0.05)
+                } else {
+                    SharedShape::cuboid(0.05, 0.02, 0.08)
+                };
+                let cell = Vector::new(0.0, (k % 4) as f64 * 1.4 - 2.1, (k / 4) as f64 * 1.4 - 2.8);
+                let pos =
+                    Vector::new(-4.0 + r.range(-1.0, 1.0), 0.0, 0.0) + cell + jitter(&mut r, 0.3);
+                let sp = r.range(150.0, 250.0);
+                let lin = Vector::new(sp, 0.0, 0.0) + jitter(&mut r, 0.02 * sp);
+                let ang = unit(&mut r) * r.range(20.0, 80.0);
+                specs.push(dynamic(shape, Pose::from_parts(pos, rot(&mut r)), lin, ang));
+            }
+            specs
         }
     }
 }
