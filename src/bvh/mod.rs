@@ -25,3 +25,4 @@ pub(crate) use node::{Leaf, Node};
 // The mesh steppers' box gaps, and the testkit's containment checks.
 pub(crate) use oriented_box::OrientedBox;
 pub use vertex_tree::VertexTree;
+pub(crate) use vertex_tree::NONE as NO_CHILD;

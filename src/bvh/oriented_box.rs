@@ -133,7 +133,7 @@ impl<T: Float> OrientedBox<T> {
 
     /// `fl(sum_k h_k |fl(u_k . m)| + rho)`.
     #[inline]
-    fn support_raw(&self, m: Vec3<T>) -> T {
+    pub(crate) fn support_raw(&self, m: Vec3<T>) -> T {
         self.half[0] * Vec3::from_array(self.axes[0]).dot(m).abs()
             + self.half[1] * Vec3::from_array(self.axes[1]).dot(m).abs()
             + self.half[2] * Vec3::from_array(self.axes[2]).dot(m).abs()

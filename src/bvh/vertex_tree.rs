@@ -12,15 +12,17 @@ use crate::{
 /// Vertices per leaf.
 const LEAF_SIZE: usize = 8;
 /// No child.
-const NONE: u32 = u32::MAX;
+pub(crate) const NONE: u32 = u32::MAX;
 
+/// A node: the ball of its vertices `start..end` (of the tree's reordered
+/// vertices), and its children (`NONE` for a leaf of at most 8 vertices).
 #[derive(Clone, Copy, Debug)]
-struct VNode<T> {
-    ball: BoundingBall<T>,
-    start: u32,
-    end: u32,
-    left: u32,
-    right: u32,
+pub(crate) struct VNode<T> {
+    pub(crate) ball: BoundingBall<T>,
+    pub(crate) start: u32,
+    pub(crate) end: u32,
+    pub(crate) left: u32,
+    pub(crate) right: u32,
 }
 
 /// A body's vertices with a ball tree over them, built once per body
@@ -75,6 +77,16 @@ impl<T: Float> VertexTree<T> {
             nodes,
             summary: body.summary(),
         })
+    }
+
+    /// The nodes, the root first.
+    pub(crate) fn nodes(&self) -> &[VNode<T>] {
+        &self.nodes
+    }
+
+    /// The vertices, in the order the nodes' ranges index.
+    pub(crate) fn vertices(&self) -> &[[T; 3]] {
+        &self.vertices
     }
 
     /// The number of vertices.

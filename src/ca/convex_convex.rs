@@ -87,21 +87,40 @@ fn segment<T: Float>(shape: &Convex<'_, T>, pose: &Pose<T>) -> Option<[Vec3<T>; 
 /// Lemma 12.1 and section "Support". `<= 0` when not separated along `n`.
 pub(crate) fn certified_gap<T: Float>(
     (a, pa, err_a): (&Convex<'_, T>, &Pose<T>, T),
-    (b, pb, err_b): (&Convex<'_, T>, &Pose<T>, T),
+    b: (&Convex<'_, T>, &Pose<T>, T),
     n: Vec3<T>,
 ) -> T {
     // The largest `x . n` over A: its placed centre's, its core's support
-    // along `M^T n`, its radius; the least over B likewise along `-n`.
+    // along `M^T n`, its radius.
     let upper_a =
         pa.translation.dot(n) + a.core_support_value(pa.inverse_transform_vector(n)) + a.radius();
+    certified_gap_to(upper_a, weight(a, pa), err_a, b, n)
+}
+
+/// The weight of a placed shape's support evaluation: `|x|_1` of its
+/// placement, its core's weight and its radius, rounded up.
+fn weight<T: Float>(s: &Convex<'_, T>, p: &Pose<T>) -> T {
+    sum_up(sum_up(p.translation.norm_l1(), s.weight()), s.radius())
+}
+
+/// [`certified_gap`] from A's computed support value `upper_a` along `n`
+/// (the largest computed `x . n` over A, each term within `64 u` of
+/// `weight_a`, an upper bound of A's points' `|x|_1`) to shape `B` placed by
+/// `pb`: what a chain's edge query measures from a link's ball or triangle
+/// to a shape obstacle (`proofs/13-chains.md`, Lemma 13.6).
+pub(crate) fn certified_gap_to<T: Float>(
+    upper_a: T,
+    weight_a: T,
+    err_a: T,
+    (b, pb, err_b): (&Convex<'_, T>, &Pose<T>, T),
+    n: Vec3<T>,
+) -> T {
+    // The least `x . n` over B along `-n`.
     let lower_b =
         pb.translation.dot(n) - b.core_support_value(pb.inverse_transform_vector(-n)) - b.radius();
-    let weight = |s: &Convex<'_, T>, p: &Pose<T>| {
-        sum_up(sum_up(p.translation.norm_l1(), s.weight()), s.radius())
-    };
     // `gap_down` covers `gamma_8` of the reach it is given; the support's
     // evaluation needs `64 u` of the weights (section "Support").
-    let reach = T::from_u32(8) * sum_up(weight(a, pa), weight(b, pb));
+    let reach = T::from_u32(8) * sum_up(weight_a, weight(b, pb));
     gap_down(lower_b - upper_a, err_a, err_b, reach)
 }
 

@@ -99,7 +99,8 @@ impl<T: Float> LinkMotion<T> {
     /// An upper bound of `|p'(s) . n|` over the sub-interval for every point
     /// `p` of the ball of world centre `c` (at `t`) and radius `rho`, with
     /// `n` a computed unit vector (Lemma 13.1, 13.2 and 13.3); and, second,
-    /// an upper bound of `|p'(s)|` (the undirected speed).
+    /// an upper bound of `|p'(s)|` (the undirected speed,
+    /// [`sweep_speed`](Self::sweep_speed)).
     pub(crate) fn ball_speed(&self, c: Vec3<T>, rho: T, n: Vec3<T>) -> (T, T) {
         let slack = T::TWO * self.delta;
         let mut v = T::ZERO;
@@ -109,17 +110,7 @@ impl<T: Float> LinkMotion<T> {
                 continue;
             }
             if term.rotational {
-                // `dist(c, axis)` from the computed centre, axis point and
-                // axis: each point is within `delta` of its exact place, and
-                // the axis direction within `axis_err`, which moves the
-                // distance by up to `axis_err |c - o|` (Lemma 13.3).
-                let lever = c - term.point;
-                let d0 = (lever.cross(term.axis).length()
-                    + rho
-                    + slack
-                    + self.axis_err * lever.length())
-                    * (T::ONE + gamma::<T>(8));
-                let dmax = d0 + self.dt * v;
+                let dmax = self.lever(term, c, rho, slack) + self.dt * v;
                 v += term.rate * dmax;
                 let s = (n.cross(term.axis).length() * (T::ONE + gamma::<T>(8))
                     + term.theta
@@ -135,8 +126,46 @@ impl<T: Float> LinkMotion<T> {
                 mu += term.rate * s;
             }
         }
-        let k = T::ONE + gamma::<T>(4 * self.terms.len() as u32 + 16);
+        let k = self.speed_factor();
         (mu * k, v * k)
+    }
+
+    /// The second value of [`ball_speed`](Self::ball_speed) alone: an upper
+    /// bound of `|p'(s)|` over the sub-interval for every point of the ball
+    /// (what an edge query sweeps a ball by, Lemma 13.5).
+    #[inline]
+    pub(crate) fn sweep_speed(&self, c: Vec3<T>, rho: T) -> T {
+        let slack = T::TWO * self.delta;
+        let mut v = T::ZERO;
+        for term in self.terms.iter().rev() {
+            if term.rate == T::ZERO {
+                continue;
+            }
+            if term.rotational {
+                v += term.rate * (self.lever(term, c, rho, slack) + self.dt * v);
+            } else {
+                v += term.rate;
+            }
+        }
+        v * self.speed_factor()
+    }
+
+    /// `dist(p, axis)` at `t` for every point `p` of the ball, from the
+    /// computed centre, axis point and axis: each point is within `delta` of
+    /// its exact place (`slack = 2 delta` for both), and the axis direction
+    /// within `axis_err`, which moves the distance by up to
+    /// `axis_err |c - o|` (Lemma 13.3).
+    #[inline]
+    fn lever(&self, term: &JointTerm<T>, c: Vec3<T>, rho: T, slack: T) -> T {
+        let lever = c - term.point;
+        (lever.cross(term.axis).length() + rho + slack + self.axis_err * lever.length())
+            * (T::ONE + gamma::<T>(8))
+    }
+
+    /// The rounding factor of the speeds' sums.
+    #[inline]
+    fn speed_factor(&self) -> T {
+        T::ONE + gamma::<T>(4 * self.terms.len() as u32 + 16)
     }
 }
 

@@ -94,6 +94,8 @@ pub(super) fn broad_phase<T: Float>(
             let meet = match pair {
                 ChainPair::Obstacle { link, obstacle } => !apart_box(row[link], boxes[obstacle]),
                 ChainPair::SelfCollision { a, b } => !apart(row[a], row[b]),
+                // Not a pair of this query (shapes are the edge queries').
+                _ => true,
             };
             if meet {
                 mask |= 1 << i;

@@ -75,6 +75,7 @@
 mod advance;
 mod bound;
 mod broad;
+mod edge;
 mod gap;
 mod model;
 mod obstacle;
@@ -82,13 +83,16 @@ mod params;
 mod report;
 mod scene;
 mod segment;
+mod shapes;
 #[cfg(feature = "urdf")]
 mod urdf;
 
+pub use edge::{EdgeOutcome, EdgeReport, EdgeStats};
 pub use model::{Chain, ChainBuilder, ChainError, JointKind, JointSpec};
 pub use obstacle::Obstacle;
 pub use params::ChainParams;
 pub use report::{ChainContact, ChainPair, ChainStats, PathReport, SegmentOutcome, SegmentReport};
-pub use scene::ChainScene;
+pub use scene::{ChainScene, EdgeChecker};
+pub use shapes::ShapeObstacle;
 #[cfg(feature = "urdf")]
 pub use urdf::UrdfOptions;

@@ -102,6 +102,8 @@ pub enum ChainError {
     InvalidParameter(&'static str),
     /// A URDF that could not be read or is not understood.
     Urdf(String),
+    /// A shape obstacle's input was refused.
+    Shape(crate::InputError),
 }
 
 impl fmt::Display for ChainError {
@@ -137,6 +139,7 @@ impl fmt::Display for ChainError {
             Self::Mesh(m) => write!(f, "a link's mesh: {m}"),
             Self::InvalidParameter(p) => write!(f, "invalid parameter: {p}"),
             Self::Urdf(m) => write!(f, "URDF: {m}"),
+            Self::Shape(e) => write!(f, "a shape obstacle: {e}"),
         }
     }
 }
@@ -554,6 +557,13 @@ impl<T: Float> Chain<T> {
             }
         }
         Ok(())
+    }
+
+    /// The number of movable joints two links' paths share (those move both
+    /// rigidly: `proofs/13-chains.md`, Lemma 13.2, part 3).
+    pub(crate) fn common_prefix(&self, a: usize, b: usize) -> usize {
+        let (pa, pb) = (&self.links[a].path, &self.links[b].path);
+        pa.iter().zip(pb.iter()).take_while(|(x, y)| x == y).count()
     }
 
     pub(crate) fn check_q(&self, q: &[T]) -> Result<(), ChainError> {

@@ -22,6 +22,16 @@ pub struct ChainParams<T> {
     /// Default `true`; `false` checks any segment (a chain whose limits are
     /// soft, or a query of motions that are not the robot's).
     pub within_limits: bool,
+    /// What an edge query ([`check_edge`](crate::chain::ChainScene::check_edge),
+    /// [`edge_is_free`](crate::chain::ChainScene::edge_is_free)) keeps
+    /// between the links and everything else (world units, default `0`:
+    /// exact against the meshes and shapes): a planner's safety margin.
+    pub padding: T,
+    /// The most items (a ball or triangle against what it is checked
+    /// against) an edge query tests before it answers
+    /// [`EdgeOutcome::Undecided`](crate::chain::EdgeOutcome::Undecided)
+    /// (default 400,000: about 50 ms on the Panda, `docs/performance.md`).
+    pub edge_budget: usize,
 }
 
 impl<T: Float> Default for ChainParams<T> {
@@ -31,6 +41,8 @@ impl<T: Float> Default for ChainParams<T> {
             max_iterations: 10_000,
             broad_pieces: 32,
             within_limits: true,
+            padding: T::ZERO,
+            edge_budget: 400_000,
         }
     }
 }
@@ -51,12 +63,34 @@ impl<T: Float> ChainParams<T> {
         self
     }
 
+    /// With a padding ([`padding`](Self::padding)).
+    #[must_use]
+    pub fn with_padding(mut self, padding: T) -> Self {
+        self.padding = padding;
+        self
+    }
+
+    /// With an edge query's work budget ([`edge_budget`](Self::edge_budget)).
+    #[must_use]
+    pub fn with_edge_budget(mut self, items: usize) -> Self {
+        self.edge_budget = items;
+        self
+    }
+
     /// `Ok` when every parameter is in its range.
     pub(super) fn validate(&self) -> Result<(), ChainError> {
         if !(self.contact_distance > T::ZERO && self.contact_distance.is_finite()) {
             return Err(ChainError::InvalidParameter(
                 "contact_distance must be positive and finite",
             ));
+        }
+        if !(self.padding >= T::ZERO && self.padding.is_finite()) {
+            return Err(ChainError::InvalidParameter(
+                "padding must be non-negative and finite",
+            ));
+        }
+        if self.edge_budget == 0 {
+            return Err(ChainError::InvalidParameter("edge_budget must be positive"));
         }
         if self.max_iterations == 0 || self.broad_pieces == 0 || self.broad_pieces > 64 {
             return Err(ChainError::InvalidParameter(

@@ -6,6 +6,7 @@ use crate::Point3;
 
 /// What a query reports touching: a link and an obstacle, or two links.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum ChainPair {
     /// Link `link` and obstacle `obstacle` (indices).
     Obstacle {
@@ -13,6 +14,14 @@ pub enum ChainPair {
         link: usize,
         /// The obstacle's index.
         obstacle: usize,
+    },
+    /// Link `link` and shape obstacle `shape`
+    /// ([`ChainScene::add_shape`](crate::chain::ChainScene::add_shape); indices).
+    Shape {
+        /// The link's index.
+        link: usize,
+        /// The shape obstacle's index.
+        shape: usize,
     },
     /// Two links (`a < b`).
     SelfCollision {

@@ -11,6 +11,7 @@ use crate::bvh::Hierarchy;
 use crate::chain::advance::{advance_pair, PairEnd};
 use crate::chain::bound::LinkMotion;
 use crate::chain::broad::broad_phase;
+use crate::chain::edge::{Edge, EdgeReport, EdgeWork, Item, Target};
 use crate::chain::gap::min_gap;
 use crate::chain::model::{Chain, ChainError};
 use crate::chain::obstacle::Obstacle;
@@ -19,6 +20,7 @@ use crate::chain::report::{
     ChainContact, ChainPair, ChainStats, PathReport, SegmentOutcome, SegmentReport,
 };
 use crate::chain::segment::{Segment, Work};
+use crate::chain::shapes::ShapeObstacle;
 use crate::rounding::gamma;
 use crate::Float;
 
@@ -66,9 +68,10 @@ use crate::Float;
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Clone, Debug)]
-pub struct ChainScene<T> {
+pub struct ChainScene<T: 'static> {
     chain: Chain<T>,
     obstacles: Vec<Obstacle<T>>,
+    shapes: Vec<ShapeObstacle<T>>,
     allowed: BTreeSet<(usize, usize)>,
     params: ChainParams<T>,
     /// For each link, the root of its rigid group (links joined by fixed
@@ -92,6 +95,7 @@ impl<T: Float> ChainScene<T> {
         Self {
             chain,
             obstacles: Vec::new(),
+            shapes: Vec::new(),
             allowed: BTreeSet::new(),
             params: ChainParams::default(),
             group,
@@ -114,6 +118,24 @@ impl<T: Float> ChainScene<T> {
     pub fn add_obstacle(&mut self, obstacle: Obstacle<T>) -> usize {
         self.obstacles.push(obstacle);
         self.obstacles.len() - 1
+    }
+
+    /// Adds a shape obstacle (a primitive, a half-space or a point cloud)
+    /// and returns its index. Shapes are checked by the edge queries
+    /// ([`check_edge`](Self::check_edge), [`edge_is_free`](Self::edge_is_free),
+    /// [`edges_are_free`](Self::edges_are_free)); the first-contact queries
+    /// ([`check_segment`](Self::check_segment), [`clearance`](Self::clearance),
+    /// [`collides_at`](Self::collides_at)) take mesh obstacles only and
+    /// refuse a scene with shapes ([`ChainError::InvalidParameter`]).
+    pub fn add_shape(&mut self, shape: ShapeObstacle<T>) -> usize {
+        self.shapes.push(shape);
+        self.shapes.len() - 1
+    }
+
+    /// The shape obstacles.
+    #[must_use]
+    pub fn shapes(&self) -> &[ShapeObstacle<T>] {
+        &self.shapes
     }
 
     /// Never checks links `a` and `b` against each other (an SRDF's
@@ -205,10 +227,145 @@ impl<T: Float> ChainScene<T> {
     /// [`ChainError::BeyondLimits`] for an end outside the joints' limits
     /// (unless [`ChainParams::within_limits`] is off).
     pub fn check_segment(&self, q0: &[T], q1: &[T]) -> Result<SegmentReport<T>, ChainError> {
+        self.meshes_only()?;
         self.check_end(q0)?;
         self.check_end(q1)?;
         let mut work = Work::default();
         Ok(self.segment(q0, q1, &mut work))
+    }
+
+    /// The first-contact queries take mesh obstacles only.
+    fn meshes_only(&self) -> Result<(), ChainError> {
+        if self.shapes.is_empty() {
+            Ok(())
+        } else {
+            Err(ChainError::InvalidParameter(
+                "a scene with shape obstacles is checked by check_edge and edge_is_free",
+            ))
+        }
+    }
+
+    /// Whether the joint-space edge `q0 -> q1` is certified free of every
+    /// obstacle (meshes and shapes) and checked link pair, with
+    /// [`ChainParams::padding`] to spare: a planner's motion validator.
+    /// A contact or an exhausted work budget is `false`
+    /// ([`check_edge`](Self::check_edge) tells them apart). For many edges
+    /// reuse one [`EdgeChecker`] ([`edge_checker`](Self::edge_checker)).
+    ///
+    /// ```
+    /// use motion_bound::chain::{ChainBuilder, ChainScene, JointKind, JointSpec, ShapeObstacle};
+    /// use motion_bound::{Convex, Pose, TriMesh, Vec3};
+    /// // A bar 1 long along x turning about z, and a thin pole at 45 degrees.
+    /// let bar = TriMesh::try_new(
+    ///     vec![[0.0, -0.02, -0.02], [1.0, 0.0, 0.0], [0.0, 0.02, -0.02], [0.0, 0.0, 0.02]],
+    ///     vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
+    /// )?;
+    /// let mut b = ChainBuilder::new();
+    /// let base = b.add_link("base", None)?;
+    /// let arm = b.add_link("arm", Some(bar))?;
+    /// b.add_joint(JointSpec {
+    ///     name: "j1".into(), kind: JointKind::Revolute, parent: base, child: arm,
+    ///     origin: Pose::IDENTITY, axis: [0.0, 0.0, 1.0], limits: Some([-3.0, 3.0]),
+    /// })?;
+    /// let mut scene = ChainScene::new(b.build()?);
+    /// let pole = Convex::try_cylinder(1.0, 0.005)?; // along its y axis
+    /// let upright = Pose { rotation: [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]],
+    ///     translation: Vec3::new(0.5, 0.5, 0.0) };
+    /// scene.add_shape(ShapeObstacle::try_new("pole", pole, upright)?);
+    /// // Sweeping 0 -> 1.5 rad passes through the pole; samples 0.1 apart would not see it.
+    /// assert!(!scene.edge_is_free(&[0.0], &[1.5])?);
+    /// assert!(scene.edge_is_free(&[0.0], &[-1.5])?);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    ///
+    /// # Errors
+    /// As [`check_segment`](Self::check_segment).
+    pub fn edge_is_free(&self, q0: &[T], q1: &[T]) -> Result<bool, ChainError> {
+        self.edge_checker().is_free(q0, q1)
+    }
+
+    /// The edge query's full answer: [`EdgeOutcome::Free`], a contact (the
+    /// segment certified free up to its time, never later than the first
+    /// touch), or undecided when [`ChainParams::edge_budget`] ran out; and
+    /// the work done.
+    ///
+    /// # Errors
+    /// As [`check_segment`](Self::check_segment).
+    pub fn check_edge(&self, q0: &[T], q1: &[T]) -> Result<EdgeReport<T>, ChainError> {
+        self.edge_checker().check(q0, q1)
+    }
+
+    /// Whether each edge `(q0, q1)` is free ([`edge_is_free`](Self::edge_is_free)),
+    /// with one checker's buffers for them all.
+    ///
+    /// # Errors
+    /// As [`check_segment`](Self::check_segment), for the first edge refused.
+    pub fn edges_are_free<Q: AsRef<[T]>>(&self, edges: &[(Q, Q)]) -> Result<Vec<bool>, ChainError> {
+        let mut checker = self.edge_checker();
+        edges
+            .iter()
+            .map(|(a, b)| checker.is_free(a.as_ref(), b.as_ref()))
+            .collect()
+    }
+
+    /// A checker for many edges of this scene: its buffers and the list of
+    /// what is checked, made once.
+    #[must_use]
+    pub fn edge_checker(&self) -> EdgeChecker<'_, T> {
+        let mut initial = Vec::new();
+        let n = self.chain.links.len();
+        // A motion slot per link (all its joints) and per link of a pair
+        // with the pair's common joints skipped.
+        let mut slots: Vec<(usize, usize)> = Vec::new();
+        let mut slot = |link: usize, skip: usize| {
+            let at = slots
+                .iter()
+                .position(|&s| s == (link, skip))
+                .unwrap_or_else(|| {
+                    slots.push((link, skip));
+                    slots.len() - 1
+                });
+            u16::try_from(at).unwrap_or(u16::MAX)
+        };
+        for l in 0..n {
+            if self.chain.links[l].tree.is_none() {
+                continue;
+            }
+            let own = slot(l, 0);
+            let item = |target| Item {
+                link: l as u32,
+                node: 0,
+                target,
+                slot: own,
+                slot_b: own,
+            };
+            for (s, shape) in self.shapes.iter().enumerate() {
+                initial.push(item(if shape.points().is_some() {
+                    Target::Cloud(s as u32, 0)
+                } else {
+                    Target::Shape(s as u32)
+                }));
+            }
+            for o in 0..self.obstacles.len() {
+                initial.push(item(Target::Mesh(o as u32, 0)));
+            }
+            for m in l + 1..n {
+                if self.checks_pair(l, m) {
+                    let skip = self.chain.common_prefix(l, m);
+                    initial.push(Item {
+                        slot: slot(l, skip),
+                        slot_b: slot(m, skip),
+                        ..item(Target::Link(m as u32, 0))
+                    });
+                }
+            }
+        }
+        EdgeChecker {
+            scene: self,
+            initial,
+            slots,
+            work: EdgeWork::default(),
+        }
     }
 
     /// A segment's end: the right length, finite, and within the limits
@@ -228,6 +385,7 @@ impl<T: Float> ChainScene<T> {
     /// [`ChainError::InvalidParameter`] for fewer than two waypoints, and as
     /// [`check_segment`](Self::check_segment).
     pub fn check_path<Q: AsRef<[T]>>(&self, waypoints: &[Q]) -> Result<PathReport<T>, ChainError> {
+        self.meshes_only()?;
         if waypoints.len() < 2 {
             return Err(ChainError::InvalidParameter("a path needs two waypoints"));
         }
@@ -313,7 +471,7 @@ impl<T: Float> ChainScene<T> {
             .into_iter()
             .filter_map(|p| match p {
                 ChainPair::SelfCollision { a, b } => Some((a, b)),
-                ChainPair::Obstacle { .. } => None,
+                _ => None,
             })
             .collect();
         for &(a, b) in &pairs {
@@ -365,6 +523,7 @@ impl<T: Float> ChainScene<T> {
         q: &[T],
         mut f: impl FnMut(PlacedPair<'_, T>, &mut Vec<(u32, u32)>) -> ControlFlow<()>,
     ) -> Result<(), ChainError> {
+        self.meshes_only()?;
         self.chain.check_q(q)?;
         let segment = self.segment_view(q, q);
         let mut work = Work::default();
@@ -439,6 +598,45 @@ impl<T: Float> ChainScene<T> {
             (None, None) => SegmentOutcome::Separated,
         };
         SegmentReport { outcome, stats }
+    }
+}
+
+/// Checks many edges of one scene ([`ChainScene::edge_checker`]), reusing
+/// its buffers: what a planner keeps for its motion validator.
+#[derive(Clone, Debug)]
+pub struct EdgeChecker<'s, T: 'static> {
+    scene: &'s ChainScene<T>,
+    initial: Vec<Item>,
+    /// The motion slots: a link and how many of its path's joints skipped.
+    slots: Vec<(usize, usize)>,
+    work: EdgeWork<T>,
+}
+
+impl<T: Float> EdgeChecker<'_, T> {
+    /// [`ChainScene::check_edge`] with this checker's buffers.
+    ///
+    /// # Errors
+    /// As [`ChainScene::check_segment`].
+    pub fn check(&mut self, q0: &[T], q1: &[T]) -> Result<EdgeReport<T>, ChainError> {
+        let scene = self.scene;
+        scene.check_end(q0)?;
+        scene.check_end(q1)?;
+        let edge = Edge {
+            segment: scene.segment_view(q0, q1),
+            shapes: &scene.shapes,
+            touch: scene.params.contact_distance + scene.params.padding,
+            padding: scene.params.padding,
+            budget: scene.params.edge_budget,
+        };
+        Ok(edge.run(&self.initial, &self.slots, &mut self.work))
+    }
+
+    /// [`ChainScene::edge_is_free`] with this checker's buffers.
+    ///
+    /// # Errors
+    /// As [`ChainScene::check_segment`].
+    pub fn is_free(&mut self, q0: &[T], q1: &[T]) -> Result<bool, ChainError> {
+        Ok(self.check(q0, q1)?.outcome.is_free())
     }
 }
 

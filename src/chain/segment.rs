@@ -88,13 +88,6 @@ impl<'a, T: Float> Segment<'a, T> {
         );
     }
 
-    /// The number of movable joints two links' paths share (those move both
-    /// rigidly).
-    fn common_prefix(&self, a: usize, b: usize) -> usize {
-        let (pa, pb) = (&self.chain.links[a].path, &self.chain.links[b].path);
-        pa.iter().zip(pb.iter()).take_while(|(x, y)| x == y).count()
-    }
-
     /// The two sides' motions over `[t, t + dt]` (`dt` rounded up by the caller).
     pub(super) fn fill_motions(&self, work: &mut Work<T>, pair: ChainPair, dt: T) {
         let mut a = take_motion(&mut work.a);
@@ -110,9 +103,14 @@ impl<'a, T: Float> Segment<'a, T> {
                 b.terms.clear();
             }
             ChainPair::SelfCollision { a: la, b: lb } => {
-                let skip = self.common_prefix(la, lb);
+                let skip = self.chain.common_prefix(la, lb);
                 work.fill(self.chain, &mut a, la, skip, dt);
                 work.fill(self.chain, &mut b, lb, skip, dt);
+            }
+            // Shapes are the edge queries' (`edge.rs`), never a pair here.
+            ChainPair::Shape { link, .. } => {
+                work.fill(self.chain, &mut a, link, 0, dt);
+                b.terms.clear();
             }
         }
         work.a = Some(a);
@@ -133,6 +131,7 @@ impl<'a, T: Float> Segment<'a, T> {
                 Some((&a.whole, b.against(a)))
             }
             ChainPair::SelfCollision { a, b } => Some((&tree(a)?.whole, &tree(b)?.whole)),
+            ChainPair::Shape { .. } => None,
         }
     }
 }

@@ -484,6 +484,50 @@ impl<'a, T: Float> Convex<'a, T> {
         }
     }
 
+    /// A point of the core near `p` (both in the body frame): the closest
+    /// one, as computed, for a point, segment, cuboid or cylinder core;
+    /// `None` for a cone or a hull (ask GJK). Only ever used to choose a
+    /// direction: what is certified along it is the support's slab gap
+    /// ([`certified_gap`](crate::ca::certified_gap)), so the point need not be
+    /// exact.
+    pub(crate) fn core_closest_point(&self, p: Vec3<T>) -> Option<Vec3<T>> {
+        let (local, pose) = match self.placed {
+            Some(pose) => (
+                pose.rotation().inverse_rotate(p - pose.translation()),
+                Some(pose),
+            ),
+            None => (p, None),
+        };
+        let z = T::ZERO;
+        let clamp = |x: T, h: T| x.max_nan(-h).min_nan(h);
+        let q = match self.core {
+            Core::Point => Vec3::new(z, z, z),
+            Core::Segment { half_height: h } => Vec3::new(z, clamp(local.y, h), z),
+            Core::Cuboid { half: h } => Vec3::new(
+                clamp(local.x, h[0]),
+                clamp(local.y, h[1]),
+                clamp(local.z, h[2]),
+            ),
+            Core::Cylinder {
+                half_height: h,
+                radius: rho,
+            } => {
+                let l = (local.x * local.x + local.z * local.z).sqrt();
+                let s = if l > rho && l.is_finite() {
+                    rho / l
+                } else {
+                    T::ONE
+                };
+                Vec3::new(local.x * s, clamp(local.y, h), local.z * s)
+            }
+            Core::Cone { .. } | Core::Polytope(_) => return None,
+        };
+        Some(match pose {
+            Some(pose) => pose.rotation().rotate(q) + pose.translation(),
+            None => q,
+        })
+    }
+
     /// The unplaced core's support value along `d`.
     fn local_support_value(&self, d: Vec3<T>) -> T {
         match self.core {

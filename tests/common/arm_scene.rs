@@ -136,10 +136,27 @@ pub fn clutter() -> Result<Vec<Item>, Error> {
         .collect()
 }
 
-/// The arm in the clutter, with the SRDF's disabled pairs (the Panda's) and
-/// the pairs touching at its ready pose disabled; and those last pairs.
-pub fn arm_scene(arm: Arm) -> Result<(ChainScene<f64>, Vec<LinkPair>), Error> {
-    let (path, ready): (&str, Vec<f64>) = match arm {
+/// The arm alone (no obstacles), with the SRDF's disabled pairs (the
+/// Panda's) and the pairs touching at its ready pose disabled; and those
+/// last pairs.
+pub fn bare_arm_scene(arm: Arm) -> Result<(ChainScene<f64>, Vec<LinkPair>), Error> {
+    let (path, ready) = arm_file(arm);
+    let chain = Chain::<f64>::from_urdf_file(format!("{}/{path}", env!("CARGO_MANIFEST_DIR")))?;
+    let mut scene = ChainScene::new(chain);
+    if arm == Arm::Panda {
+        for (a, b) in PANDA_SRDF_DISABLED {
+            let a = scene.chain().link_index(&format!("panda_{a}"))?;
+            let b = scene.chain().link_index(&format!("panda_{b}"))?;
+            scene.allow_collision(a, b);
+        }
+    }
+    let defaults = scene.allow_collisions_at(&ready, 0.0)?;
+    Ok((scene, defaults))
+}
+
+/// The arm's URDF (from the repository's root) and its ready pose.
+fn arm_file(arm: Arm) -> (&'static str, Vec<f64>) {
+    match arm {
         Arm::Panda => (
             "data/arms/franka_panda/panda.urdf",
             vec![0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785, 0.02, 0.02],
@@ -148,7 +165,13 @@ pub fn arm_scene(arm: Arm) -> Result<(ChainScene<f64>, Vec<LinkPair>), Error> {
             "data/arms/kuka_iiwa/model.urdf",
             vec![0.0, 0.5, 0.0, -1.2, 0.0, 0.8, 0.0],
         ),
-    };
+    }
+}
+
+/// The arm in the clutter, with the SRDF's disabled pairs (the Panda's) and
+/// the pairs touching at its ready pose disabled; and those last pairs.
+pub fn arm_scene(arm: Arm) -> Result<(ChainScene<f64>, Vec<LinkPair>), Error> {
+    let (path, ready) = arm_file(arm);
     let chain = Chain::<f64>::from_urdf_file(format!("{}/{path}", env!("CARGO_MANIFEST_DIR")))?;
     let mut scene = ChainScene::new(chain);
     for (name, mesh, pose) in clutter()? {

@@ -409,6 +409,8 @@ impl Truth {
                 (Some(ta), Some(tb)) => distance(ta, &places[a], tb, &places[b], cap),
                 _ => f64::INFINITY,
             },
+            // The truth takes every obstacle as a mesh.
+            _ => f64::INFINITY,
         }
     }
 
@@ -445,6 +447,7 @@ impl Truth {
         let bound = |p: ChainPair| match p {
             ChainPair::Obstacle { link, .. } => speeds[link],
             ChainPair::SelfCollision { a, b } => speeds[a] + speeds[b],
+            _ => f64::INFINITY,
         };
         let mut touch: Option<(f64, f64, ChainPair)> = None;
         let mut min_distance = f64::INFINITY;

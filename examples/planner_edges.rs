@@ -1,0 +1,422 @@
+//! A planner's edge checks, certified: the Panda (its collision meshes) in
+//! MotionBenchMaker's scenes (`data/mbm/`: boxes, cylinders and spheres, as
+//! shapes, never meshed), random edges of 0.05 to 0.3 rad, each checked by
+//! `EdgeChecker::check` on one core; the first edges of each scene also
+//! against an independent ground truth (`tests/common/chain_truth.rs`: its
+//! own forward kinematics, the obstacles as meshes *inscribed* in the shapes
+//! (boxes exactly, cylinders as 64-sided prisms, spheres as icospheres with
+//! their vertices on the sphere), exact triangle distances and dense
+//! sampling), so that a touch it finds is a touch of the real shapes.
+//!
+//! ```text
+//! cargo run --release --example planner_edges [-- --edges 10000 --truth 500 --seed 1 --write-edges DIR]
+//! ```
+//!
+//! One line per scene: `scene S: edges N, colliding C, missed M, late L,
+//! mean us per edge X, p99 us Y, max ms Z` (`colliding`: edges not certified
+//! free; `missed`: of the truth's edges, those the truth finds touching and
+//! we call free; `late`: those where our `free_until` is past the truth's
+//! first touching sample), then the work and the undecided count.
+//! `--write-edges DIR` writes each scene's edges (`DIR/S.edges`, 14 numbers a
+//! line: `q0` then `q1`, the seven arm joints) for `compare/vamp/`.
+
+#[path = "../tests/common/arm_scene.rs"]
+mod arm_scene;
+#[path = "../tests/common/chain_truth.rs"]
+mod chain_truth;
+
+use std::fmt::Write as _;
+use std::time::Instant;
+
+use arm_scene::{bare_arm_scene, Arm};
+use chain_truth::Truth;
+use motion_bound::chain::{ChainParams, ChainScene, EdgeOutcome, Obstacle, ShapeObstacle};
+use motion_bound::{Convex, Pose, TriMesh, Vec3};
+use motion_bound_devkit::{cpu_name, Args, Rng};
+use serde_json::Value;
+
+type Error = Box<dyn std::error::Error>;
+
+/// The Panda's finger opening (both fingers; VAMP's model holds them fixed).
+const FINGERS: f64 = 0.04;
+const SCENES: [&str; 3] = ["table_pick", "bookshelf_small", "cage"];
+
+fn numbers(v: &Value) -> Result<Vec<f64>, Error> {
+    v.as_array()
+        .ok_or("expected an array")?
+        .iter()
+        .map(|x| x.as_f64().ok_or_else(|| "expected a number".into()))
+        .collect()
+}
+
+fn vec3(v: &Value) -> Result<[f64; 3], Error> {
+    let n = numbers(v)?;
+    Ok([n[0], n[1], n[2]])
+}
+
+fn rotation(v: &Value) -> Result<[[f64; 3]; 3], Error> {
+    let rows = v.as_array().ok_or("rotation: expected rows")?;
+    Ok([vec3(&rows[0])?, vec3(&rows[1])?, vec3(&rows[2])?])
+}
+
+fn mat_mul(a: &[[f64; 3]; 3], b: &[[f64; 3]; 3]) -> [[f64; 3]; 3] {
+    let mut o = [[0.0; 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            o[i][j] = (0..3).map(|k| a[i][k] * b[k][j]).sum();
+        }
+    }
+    o
+}
+
+/// One scene's obstacles: each as a shape, and as a mesh inscribed in it
+/// (for the truth).
+struct Scene {
+    shapes: Vec<ShapeObstacle<f64>>,
+    meshes: Vec<Obstacle<f64>>,
+}
+
+/// The box of half extents `h` as 12 triangles (exact).
+fn box_mesh(h: [f64; 3]) -> Result<TriMesh<f64>, Error> {
+    let v: Vec<[f64; 3]> = (0..8)
+        .map(|i| [0, 1, 2].map(|k| if i >> k & 1 == 1 { h[k] } else { -h[k] }))
+        .collect();
+    let t = vec![
+        [0, 2, 1],
+        [1, 2, 3],
+        [4, 5, 6],
+        [5, 7, 6],
+        [0, 1, 4],
+        [1, 5, 4],
+        [2, 6, 3],
+        [3, 6, 7],
+        [0, 4, 2],
+        [2, 4, 6],
+        [1, 3, 5],
+        [3, 7, 5],
+    ];
+    Ok(TriMesh::try_new(v, t)?)
+}
+
+/// The prism with `n` sides inscribed in the cylinder of radius `r` and
+/// half length `h` along `y`.
+fn prism_mesh(r: f64, h: f64, n: u32) -> Result<TriMesh<f64>, Error> {
+    let mut v = Vec::new();
+    for i in 0..n {
+        let a = std::f64::consts::TAU * f64::from(i) / f64::from(n);
+        v.push([r * a.cos(), -h, r * a.sin()]);
+        v.push([r * a.cos(), h, r * a.sin()]);
+    }
+    v.push([0.0, -h, 0.0]);
+    v.push([0.0, h, 0.0]);
+    let (lo, hi) = (2 * n, 2 * n + 1);
+    let mut t = Vec::new();
+    for i in 0..n {
+        let j = (i + 1) % n;
+        let (a0, a1, b0, b1) = (2 * i, 2 * i + 1, 2 * j, 2 * j + 1);
+        t.push([a0, a1, b1]);
+        t.push([a0, b1, b0]);
+        t.push([lo, a0, b0]);
+        t.push([hi, b1, a1]);
+    }
+    Ok(TriMesh::try_new(v, t)?)
+}
+
+/// An icosphere of radius `r` (vertices on the sphere), subdivided twice.
+fn sphere_mesh(r: f64) -> Result<TriMesh<f64>, Error> {
+    let p = (1.0 + 5f64.sqrt()) / 2.0;
+    let mut v: Vec<[f64; 3]> = vec![
+        [-1.0, p, 0.0],
+        [1.0, p, 0.0],
+        [-1.0, -p, 0.0],
+        [1.0, -p, 0.0],
+        [0.0, -1.0, p],
+        [0.0, 1.0, p],
+        [0.0, -1.0, -p],
+        [0.0, 1.0, -p],
+        [p, 0.0, -1.0],
+        [p, 0.0, 1.0],
+        [-p, 0.0, -1.0],
+        [-p, 0.0, 1.0],
+    ];
+    let mut t: Vec<[u32; 3]> = vec![
+        [0, 11, 5],
+        [0, 5, 1],
+        [0, 1, 7],
+        [0, 7, 10],
+        [0, 10, 11],
+        [1, 5, 9],
+        [5, 11, 4],
+        [11, 10, 2],
+        [10, 7, 6],
+        [7, 1, 8],
+        [3, 9, 4],
+        [3, 4, 2],
+        [3, 2, 6],
+        [3, 6, 8],
+        [3, 8, 9],
+        [4, 9, 5],
+        [2, 4, 11],
+        [6, 2, 10],
+        [8, 6, 7],
+        [9, 8, 1],
+    ];
+    let unit = |a: [f64; 3]| {
+        let l = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
+        [a[0] / l * r, a[1] / l * r, a[2] / l * r]
+    };
+    for x in &mut v {
+        *x = unit(*x);
+    }
+    for _ in 0..2 {
+        let mut next = Vec::new();
+        let mut mid = std::collections::HashMap::new();
+        let mut m = |a: u32, b: u32, v: &mut Vec<[f64; 3]>| -> u32 {
+            *mid.entry((a.min(b), a.max(b))).or_insert_with(|| {
+                let (x, y) = (v[a as usize], v[b as usize]);
+                v.push(unit([x[0] + y[0], x[1] + y[1], x[2] + y[2]]));
+                (v.len() - 1) as u32
+            })
+        };
+        for [a, b, c] in t {
+            let (ab, bc, ca) = (m(a, b, &mut v), m(b, c, &mut v), m(c, a, &mut v));
+            next.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
+        }
+        t = next;
+    }
+    Ok(TriMesh::try_new(v, t)?)
+}
+
+fn load(name: &str) -> Result<Scene, Error> {
+    let path = format!("{}/data/mbm/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    let json: Value = serde_json::from_str(&std::fs::read_to_string(&path)?)?;
+    let mut scene = Scene {
+        shapes: Vec::new(),
+        meshes: Vec::new(),
+    };
+    let list = |key: &str| json[key].as_array().cloned().unwrap_or_default();
+    for c in list("cuboids") {
+        let h = vec3(&c["half_extents"])?;
+        let pose = Pose {
+            rotation: rotation(&c["rotation"])?,
+            translation: Vec3::from_array(vec3(&c["center"])?),
+        };
+        let name = c["name"].as_str().unwrap_or("cuboid").to_string();
+        scene
+            .shapes
+            .push(ShapeObstacle::try_new(&name, Convex::try_cuboid(h)?, pose)?);
+        scene
+            .meshes
+            .push(Obstacle::try_new(name, box_mesh(h)?, pose)?);
+    }
+    // The file's cylinders are along their local z; ours along y: turn y onto z.
+    let y_to_z = [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]];
+    for c in list("cylinders") {
+        let (r, h) = (
+            c["radius"].as_f64().ok_or("radius")?,
+            c["half_length"].as_f64().ok_or("half_length")?,
+        );
+        let pose = Pose {
+            rotation: mat_mul(&rotation(&c["rotation"])?, &y_to_z),
+            translation: Vec3::from_array(vec3(&c["center"])?),
+        };
+        let name = c["name"].as_str().unwrap_or("cylinder").to_string();
+        scene.shapes.push(ShapeObstacle::try_new(
+            &name,
+            Convex::try_cylinder(h, r)?,
+            pose,
+        )?);
+        scene
+            .meshes
+            .push(Obstacle::try_new(name, prism_mesh(r, h, 64)?, pose)?);
+    }
+    for c in list("spheres") {
+        let r = c["radius"].as_f64().ok_or("radius")?;
+        let pose = Pose::from_translation(Vec3::from_array(vec3(&c["center"])?));
+        let name = c["name"].as_str().unwrap_or("sphere").to_string();
+        scene
+            .shapes
+            .push(ShapeObstacle::try_new(&name, Convex::try_ball(r)?, pose)?);
+        scene
+            .meshes
+            .push(Obstacle::try_new(name, sphere_mesh(r)?, pose)?);
+    }
+    Ok(scene)
+}
+
+/// A random edge of length 0.05 to 0.3 rad within the limits (the arm's
+/// seven joints; the fingers held open).
+fn edge(rng: &mut Rng, limits: &[[f64; 2]]) -> (Vec<f64>, Vec<f64>) {
+    loop {
+        let q0: Vec<f64> = limits[..7]
+            .iter()
+            .map(|&[lo, hi]| rng.range(lo, hi))
+            .collect();
+        let d: Vec<f64> = (0..7).map(|_| rng.range(-1.0, 1.0)).collect();
+        let n = d.iter().map(|x| x * x).sum::<f64>().sqrt();
+        if !(n > 0.1 && n <= 1.0) {
+            continue;
+        }
+        let len = rng.range(0.05, 0.3);
+        let q1: Vec<f64> = q0.iter().zip(&d).map(|(a, x)| a + x / n * len).collect();
+        if q1
+            .iter()
+            .zip(limits)
+            .all(|(x, [lo, hi])| x >= lo && x <= hi)
+        {
+            let full = |q: Vec<f64>| q.into_iter().chain([FINGERS, FINGERS]).collect();
+            return (full(q0), full(q1));
+        }
+    }
+}
+
+fn main() -> Result<(), Error> {
+    let mut args = Args::from_env(
+        "planner_edges [--edges 10000] [--truth 500] [--seed 1] [--scene S] [--write-edges DIR]",
+    );
+    let edges: usize = args.value_or("--edges", 10_000);
+    let truth_edges: usize = args.value_or("--truth", 500);
+    let seed: u64 = args.value_or("--seed", 1);
+    let write: String = args.value_or("--write-edges", String::new());
+    let only: String = args.value_or("--scene", String::new());
+    args.finish();
+    let (arm, _) = bare_arm_scene(Arm::Panda)?;
+    let limits: Vec<[f64; 2]> = arm
+        .chain()
+        .limits()
+        .into_iter()
+        .map(|l| l.unwrap_or([-std::f64::consts::PI, std::f64::consts::PI]))
+        .collect();
+    println!(
+        "the Panda ({} links, its collision meshes), random edges of 0.05 to 0.3 rad, one core; CPU: {}",
+        arm.chain().link_count(),
+        cpu_name()
+    );
+    for name in SCENES {
+        if !only.is_empty() && only != name {
+            continue;
+        }
+        let loaded = load(name)?;
+        let mut scene: ChainScene<f64> = arm.clone();
+        scene.set_params(ChainParams::default().with_within_limits(true))?;
+        let mut meshed = arm.clone();
+        if std::env::var_os("PE_NOSHAPES").is_none() {
+            for s in loaded.shapes {
+                scene.add_shape(s);
+            }
+        }
+        if std::env::var_os("PE_NOSELF").is_some() {
+            let n = scene.chain().link_count();
+            for a in 0..n {
+                for b in 0..n {
+                    if a != b {
+                        scene.allow_collision(a, b);
+                    }
+                }
+            }
+        }
+        for m in loaded.meshes {
+            meshed.add_obstacle(m);
+        }
+        let truth = Truth::new(&meshed);
+        let mut rng = Rng::new(seed);
+        let list: Vec<(Vec<f64>, Vec<f64>)> = (0..edges).map(|_| edge(&mut rng, &limits)).collect();
+        if !write.is_empty() {
+            let mut out = String::new();
+            for (a, b) in &list {
+                for x in a[..7].iter().chain(&b[..7]) {
+                    write!(out, "{x:.17e} ")?;
+                }
+                out.push('\n');
+            }
+            std::fs::create_dir_all(&write)?;
+            std::fs::write(format!("{write}/{name}.edges"), out)?;
+        }
+        let mut checker = scene.edge_checker();
+        let mut times = Vec::with_capacity(edges);
+        let (mut colliding, mut undecided, mut tests, mut intervals) = (0, 0, 0usize, 0usize);
+        let mut verdicts = Vec::with_capacity(edges);
+        for (q0, q1) in &list {
+            let start = Instant::now();
+            let report = checker.check(q0, q1)?;
+            times.push(start.elapsed().as_secs_f64());
+            tests += report.stats.tests;
+            intervals += report.stats.intervals;
+            match report.outcome {
+                EdgeOutcome::Free => {}
+                EdgeOutcome::Undecided { .. } => {
+                    undecided += 1;
+                    colliding += 1;
+                }
+                _ => colliding += 1,
+            }
+            verdicts.push(report.outcome);
+            if std::env::var_os("PE_SLOW").is_some() && times[times.len() - 1] > 3e-3 {
+                println!(
+                    "    slow {:.2} ms: {:?} {:?}",
+                    times[times.len() - 1] * 1e3,
+                    report.outcome,
+                    report.stats
+                );
+            }
+        }
+        if std::env::var_os("PE_SPLIT").is_some() {
+            let (mut tf, mut nf, mut tc, mut nc, mut t0, mut n0) = (0.0, 0, 0.0, 0, 0.0, 0);
+            for (t, o) in times.iter().zip(&verdicts) {
+                match o {
+                    EdgeOutcome::Free => {
+                        tf += t;
+                        nf += 1;
+                    }
+                    EdgeOutcome::Contact { free_until, .. } if *free_until == 0.0 => {
+                        t0 += t;
+                        n0 += 1;
+                    }
+                    _ => {
+                        tc += t;
+                        nc += 1;
+                    }
+                }
+            }
+            println!("  free {nf} mean us {:.1} (sum ms {:.1}); contact at 0 {n0} mean us {:.1} (sum ms {:.1}); contact later {nc} mean us {:.1} (sum ms {:.1})",
+                tf / nf.max(1) as f64 * 1e6, tf * 1e3, t0 / n0.max(1) as f64 * 1e6, t0 * 1e3, tc / nc.max(1) as f64 * 1e6, tc * 1e3);
+        }
+        let (mut missed, mut late, mut truth_colliding) = (0, 0, 0);
+        for ((q0, q1), outcome) in list.iter().zip(&verdicts).take(truth_edges) {
+            let sampled = truth.sample(q0, q1, 1e-4);
+            if let Some((t_touch, _, _)) = sampled.touch {
+                truth_colliding += 1;
+                match *outcome {
+                    EdgeOutcome::Free => missed += 1,
+                    EdgeOutcome::Contact { free_until, .. }
+                    | EdgeOutcome::Undecided { free_until }
+                        if free_until > t_touch =>
+                    {
+                        late += 1;
+                    }
+                    _ => {}
+                }
+            }
+        }
+        let mean = times.iter().sum::<f64>() / edges as f64;
+        let mut sorted = times.clone();
+        sorted.sort_by(f64::total_cmp);
+        let p99 = sorted[((edges as f64 - 1.0) * 0.99) as usize];
+        let max = sorted[edges - 1];
+        println!(
+            "scene {name}: edges {edges}, colliding {colliding}, missed {missed}, late {late}, mean us per edge {:.1}, p99 us {:.1}, max ms {:.2}",
+            mean * 1e6,
+            p99 * 1e6,
+            max * 1e3
+        );
+        println!(
+            "  {} shapes; median us {:.1}; undecided {undecided}; per edge: {:.0} tests, {:.1} intervals; truth over the first {}: {truth_colliding} touching",
+            scene.shapes().len(),
+            sorted[edges / 2] * 1e6,
+            tests as f64 / edges as f64,
+            intervals as f64 / edges as f64,
+            truth_edges.min(edges)
+        );
+    }
+    Ok(())
+}

@@ -1,0 +1,683 @@
+//! A planner's edge at a planner's price: the joint-space segment certified
+//! free in one pass where every link's ball is clear of what it is checked
+//! against, and split (in time, or down a ball tree) only where it is not
+//! (`proofs/13-chains.md`, Lemmas 13.5 and 13.6).
+//!
+//! The engine works on *items*: a node of a link's ball tree and what it is
+//! checked against (a shape obstacle, a node of a point cloud's or a mesh
+//! obstacle's tree, or a node of another link's tree). Over a time interval
+//! `[t0, t1]` the chain is placed once at its middle `m`; an item is clear
+//! over the whole interval when its certified gap at `m` exceeds the
+//! distance its balls can sweep in half the interval (Lemma 13.5: the chain
+//! bound taken both ways from `m`). Items that are not clear are refined
+//! down a tree when a ball is larger than the sweep, measured exactly at the
+//! leaves (a triangle against a shape, a triangle or a cloud's points), or
+//! kept; the kept ones are checked again on each half of the interval,
+//! the earlier half first. So the intervals before the one being checked
+//! are certified free, and a contact is declared at `m` on an exact
+//! distance within the contact distance: never later than the first touch.
+
+use alloc::vec::Vec;
+
+use crate::bvh::{Hierarchy, OrientedBox, NO_CHILD};
+use crate::chain::bound::LinkMotion;
+use crate::chain::gap::{placed_corners, slab_gap};
+use crate::chain::report::ChainPair;
+use crate::chain::segment::{take_motion, Segment, Work};
+use crate::chain::shapes::{node_points, triangle_points_gap, Against, Geometry, ShapeObstacle};
+use crate::geometry::closest::triangle_triangle_vec;
+use crate::rounding::{add_up, diff_up, gamma, gap_down, mul_up, sum_up};
+use crate::{Float, Vec3};
+
+/// How an edge query ended ([`ChainScene::check_edge`](crate::chain::ChainScene::check_edge)).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum EdgeOutcome<T> {
+    /// Every checked pair is certified apart (beyond the padding) over the
+    /// whole segment.
+    Free,
+    /// A contact: the segment is certified free on `[0, free_until]`, and at
+    /// `at` (`free_until <= at`, at most half a checked interval later) the
+    /// pair's surfaces are within the contact distance plus the padding
+    /// (computed distance).
+    Contact {
+        /// The segment is free before this time.
+        free_until: T,
+        /// The time at which the contact was measured.
+        at: T,
+        /// The pair found within the contact distance.
+        pair: ChainPair,
+    },
+    /// The work budget ([`ChainParams::edge_budget`](crate::chain::ChainParams::edge_budget))
+    /// ran out: free on `[0, free_until]`, the rest undecided. A planner
+    /// treats it as not free.
+    Undecided {
+        /// The segment is free before this time.
+        free_until: T,
+    },
+}
+
+impl<T> EdgeOutcome<T> {
+    /// Whether the edge is certified free.
+    #[must_use]
+    pub const fn is_free(&self) -> bool {
+        matches!(self, Self::Free)
+    }
+}
+
+/// What an edge query did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct EdgeStats {
+    /// Items tested (a ball or triangle against what it is checked
+    /// against): the work the budget counts.
+    pub tests: usize,
+    /// Exact leaf measurements among them (triangle against a shape, a
+    /// triangle or a cloud's points).
+    pub leaf_tests: usize,
+    /// Time intervals the chain was placed for (forward kinematics).
+    pub intervals: usize,
+}
+
+impl core::ops::AddAssign for EdgeStats {
+    fn add_assign(&mut self, o: Self) {
+        self.tests += o.tests;
+        self.leaf_tests += o.leaf_tests;
+        self.intervals += o.intervals;
+    }
+}
+
+/// An edge query's outcome and work.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct EdgeReport<T> {
+    /// How it ended.
+    pub outcome: EdgeOutcome<T>,
+    /// What it did.
+    pub stats: EdgeStats,
+}
+
+/// What an item's link node is checked against.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Target {
+    /// Shape obstacle `s` (not a cloud).
+    Shape(u32),
+    /// Node `k` of cloud `s`'s tree.
+    Cloud(u32, u32),
+    /// Node `k` of mesh obstacle `o`'s tree.
+    Mesh(u32, u32),
+    /// Node `k` of link `b`'s tree.
+    Link(u32, u32),
+}
+
+/// A node of a link's tree and what it is checked against, with the
+/// motion slots of the link and (for a link pair) of the other link: a pair
+/// of links counts only the joints below their common ancestor (Lemma 13.2,
+/// part 3), so each side's motion is filled with that many joints skipped.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Item {
+    pub(super) link: u32,
+    pub(super) node: u32,
+    pub(super) target: Target,
+    pub(super) slot: u16,
+    pub(super) slot_b: u16,
+}
+
+/// Why an interval stopped the query.
+enum Stop<T> {
+    Contact { at: T, pair: ChainPair },
+    Undecided,
+}
+
+/// What testing one item found.
+enum Verdict {
+    /// Clear over the interval.
+    Clear,
+    /// Not clear; refine the link's node.
+    SplitLink,
+    /// Not clear; refine the target's node.
+    SplitTarget,
+    /// Not clear and nothing to refine: check again on the halves.
+    Keep,
+    /// Within the contact distance at the interval's middle.
+    Contact,
+}
+
+/// An edge query's reusable buffers.
+#[derive(Clone, Debug, Default)]
+pub(super) struct EdgeWork<T> {
+    pub(super) work: Work<T>,
+    motions: Vec<LinkMotion<T>>,
+    still: Vec<LinkMotion<T>>,
+    items: Vec<Item>,
+    /// Items to test in this interval, with the sweeps of both sides when
+    /// known (a parent's: Lemma 13.5, a node's points are its parent's), negative
+    /// when not yet computed.
+    stack: Vec<(Item, [T; 2])>,
+    stats: EdgeStats,
+}
+
+/// The scene along one edge, as the engine sees it.
+pub(super) struct Edge<'a, T: 'static> {
+    pub(super) segment: Segment<'a, T>,
+    pub(super) shapes: &'a [ShapeObstacle<T>],
+    /// Contact distance plus padding: what a leaf's computed distance is
+    /// declared touching at.
+    pub(super) touch: T,
+    /// What a certified gap must exceed.
+    pub(super) padding: T,
+    pub(super) budget: usize,
+}
+
+impl<T: Float> Edge<'_, T> {
+    /// Runs the query from the items `initial`.
+    pub(super) fn run(
+        &self,
+        initial: &[Item],
+        slots: &[(usize, usize)],
+        w: &mut EdgeWork<T>,
+    ) -> EdgeReport<T> {
+        let chain = self.segment.chain;
+        let (q0, q1) = (self.segment.q0, self.segment.q1);
+        w.stats = EdgeStats::default();
+        w.work.errors.compute(chain, q0, q1);
+        w.work.rate.clear();
+        w.work.rate.extend(
+            q0.iter()
+                .zip(q1)
+                .map(|(a, b)| (*b - *a).abs() * (T::ONE + gamma::<T>(2))),
+        );
+        w.motions
+            .resize_with(slots.len(), || take_motion(&mut None));
+        w.still.clear();
+        for o in self.segment.obstacles {
+            let mut m = take_motion(&mut None);
+            m.pose = o.pose;
+            m.delta = o.delta;
+            m.reach = o.reach;
+            w.still.push(m);
+        }
+        w.items.clear();
+        w.items.extend_from_slice(initial);
+        let n = w.items.len();
+        let outcome = match self.interval(w, slots, T::ZERO, T::ONE, 0, n) {
+            Ok(()) => EdgeOutcome::Free,
+            Err((t0, Stop::Contact { at, pair })) => EdgeOutcome::Contact {
+                free_until: t0,
+                at,
+                pair,
+            },
+            Err((t0, Stop::Undecided)) => EdgeOutcome::Undecided { free_until: t0 },
+        };
+        EdgeReport {
+            outcome,
+            stats: w.stats,
+        }
+    }
+
+    /// Checks the items `start..end` over `[t0, t1]`; on a stop, the
+    /// interval's start (everything before it is certified free) and why.
+    fn interval(
+        &self,
+        w: &mut EdgeWork<T>,
+        slots: &[(usize, usize)],
+        t0: T,
+        t1: T,
+        start: usize,
+        end: usize,
+    ) -> Result<(), (T, Stop<T>)> {
+        let chain = self.segment.chain;
+        // Dyadic ends: the middle is exact, and so is the half width
+        // (rounded up all the same).
+        let mid = (t0 + t1) * T::HALF;
+        let half = diff_up(t1, mid);
+        if !(mid > t0 && mid < t1) {
+            return Err((t0, Stop::Undecided));
+        }
+        w.stats.intervals += 1;
+        self.segment.place(&mut w.work, mid);
+        for (m, &(link, skip)) in w.motions.iter_mut().zip(slots) {
+            w.work.fill(chain, m, link, skip, half);
+        }
+        let kept = w.items.len();
+        for i in start..end {
+            w.stack.push((w.items[i], [-T::ONE; 2]));
+            while let Some((it, mut sweeps)) = w.stack.pop() {
+                w.stats.tests += 1;
+                if w.stats.tests > self.budget {
+                    w.stack.clear();
+                    return Err((t0, Stop::Undecided));
+                }
+                match self.test(&w.motions, &w.still, &mut w.stats, it, &mut sweeps) {
+                    Verdict::Clear => {}
+                    Verdict::Keep => w.items.push(it),
+                    Verdict::SplitLink => {
+                        if let Some(tree) = self.link_tree(it.link) {
+                            let node = &tree.nodes[it.node as usize];
+                            let m = &w.motions[it.slot as usize];
+                            let other = self.target_centre(&w.motions, &w.still, it);
+                            let far = |i: u32| {
+                                let b = &tree.nodes[i as usize].ball;
+                                (m.pose.transform_point(*b.centre()) - other).length() - b.radius()
+                            };
+                            // The child nearer the other side last: taken
+                            // first, where a contact is likeliest.
+                            let (near, away) = nearer_last(node.left, node.right, far);
+                            for child in [away, near] {
+                                w.stack.push((Item { node: child, ..it }, sweeps));
+                            }
+                        }
+                    }
+                    Verdict::SplitTarget => self.split_target(w, it, sweeps),
+                    Verdict::Contact => {
+                        w.stack.clear();
+                        return Err((
+                            t0,
+                            Stop::Contact {
+                                at: mid,
+                                pair: self.pair(it),
+                            },
+                        ));
+                    }
+                }
+            }
+        }
+        let survivors = w.items.len();
+        if survivors > kept {
+            let first = self.interval(w, slots, t0, mid, kept, survivors);
+            let result = first.and_then(|()| self.interval(w, slots, mid, t1, kept, survivors));
+            w.items.truncate(kept);
+            return result;
+        }
+        Ok(())
+    }
+
+    /// Link `link`'s hierarchy (`None` for a link without geometry, which
+    /// the scene never puts in an item).
+    fn link_tree(&self, link: u32) -> Option<&Hierarchy<T>> {
+        self.segment.chain.links[link as usize]
+            .tree
+            .as_ref()
+            .map(|t| &t.whole)
+    }
+
+    fn pair(&self, it: Item) -> ChainPair {
+        let link = it.link as usize;
+        match it.target {
+            Target::Shape(s) | Target::Cloud(s, _) => ChainPair::Shape {
+                link,
+                shape: s as usize,
+            },
+            Target::Mesh(o, _) => ChainPair::Obstacle {
+                link,
+                obstacle: o as usize,
+            },
+            Target::Link(b, _) => ChainPair::SelfCollision {
+                a: link.min(b as usize),
+                b: link.max(b as usize),
+            },
+        }
+    }
+
+    fn split_target(&self, w: &mut EdgeWork<T>, it: Item, sweeps: [T; 2]) {
+        let children = match it.target {
+            Target::Shape(_) => return,
+            Target::Cloud(s, k) => match &self.shapes[s as usize].geometry {
+                Geometry::Points { tree, .. } => {
+                    let n = &tree.nodes()[k as usize];
+                    [Target::Cloud(s, n.left), Target::Cloud(s, n.right)]
+                }
+                _ => return,
+            },
+            Target::Mesh(o, k) => {
+                let n = &self.segment.obstacles[o as usize].tree.whole.nodes[k as usize];
+                [Target::Mesh(o, n.left), Target::Mesh(o, n.right)]
+            }
+            Target::Link(b, k) => {
+                let Some(tree) = self.link_tree(b) else {
+                    return;
+                };
+                let n = &tree.nodes[k as usize];
+                [Target::Link(b, n.left), Target::Link(b, n.right)]
+            }
+        };
+        let here = self.link_tree(it.link).map_or(Vec3::ZERO, |t| {
+            w.motions[it.slot as usize]
+                .pose
+                .transform_point(*t.nodes[it.node as usize].ball.centre())
+        });
+        let far = |k: usize| {
+            let (c, r) = self.target_ball(
+                &w.motions,
+                &w.still,
+                Item {
+                    target: children[k],
+                    ..it
+                },
+            );
+            (c - here).length() - r
+        };
+        let (near, away) = nearer_last(0, 1, |k| far(k as usize));
+        for k in [away, near] {
+            w.stack.push((
+                Item {
+                    target: children[k as usize],
+                    ..it
+                },
+                sweeps,
+            ));
+        }
+    }
+
+    /// The placed centre and radius of an item's target node (a shape's
+    /// placement with radius zero).
+    fn target_ball(
+        &self,
+        motions: &[LinkMotion<T>],
+        still: &[LinkMotion<T>],
+        it: Item,
+    ) -> (Vec3<T>, T) {
+        match it.target {
+            Target::Shape(s) => (self.shapes[s as usize].pose.translation, T::ZERO),
+            Target::Cloud(s, k) => match &self.shapes[s as usize].geometry {
+                Geometry::Points { tree, .. } => {
+                    let b = &tree.nodes()[k as usize].ball;
+                    (Vec3::from_array(*b.centre()), b.radius())
+                }
+                _ => (Vec3::ZERO, T::ZERO),
+            },
+            Target::Mesh(o, k) => {
+                let b = &self.segment.obstacles[o as usize].tree.whole.nodes[k as usize].ball;
+                (
+                    still[o as usize].pose.transform_point(*b.centre()),
+                    b.radius(),
+                )
+            }
+            Target::Link(b, k) => match self.link_tree(b) {
+                Some(tree) => {
+                    let ball = &tree.nodes[k as usize].ball;
+                    (
+                        motions[it.slot_b as usize]
+                            .pose
+                            .transform_point(*ball.centre()),
+                        ball.radius(),
+                    )
+                }
+                None => (Vec3::ZERO, T::ZERO),
+            },
+        }
+    }
+
+    /// The placed centre of an item's target node.
+    fn target_centre(
+        &self,
+        motions: &[LinkMotion<T>],
+        still: &[LinkMotion<T>],
+        it: Item,
+    ) -> Vec3<T> {
+        self.target_ball(motions, still, it).0
+    }
+
+    /// Tests one item over the current interval (Lemmas 13.5 and 13.6).
+    fn test(
+        &self,
+        motions: &[LinkMotion<T>],
+        still: &[LinkMotion<T>],
+        stats: &mut EdgeStats,
+        it: Item,
+        sweeps: &mut [T; 2],
+    ) -> Verdict {
+        let ma = &motions[it.slot as usize];
+        // A link without geometry meets nothing.
+        let Some(ta) = self.link_tree(it.link) else {
+            return Verdict::Clear;
+        };
+        let na = &ta.nodes[it.node as usize];
+        let ca = ma.pose.transform_point(*na.ball.centre());
+        let ra = na.ball.radius();
+        // Every point below a node is its parent's: the parent's sweep holds.
+        if sweeps[0] < T::ZERO {
+            sweeps[0] = mul_up(ma.dt, ma.sweep_speed(ca, ra));
+        }
+        let sa = sweeps[0];
+        let leaf_a = na.leaf();
+        match it.target {
+            Target::Shape(s) => {
+                let o = &self.shapes[s as usize];
+                let against = match &o.geometry {
+                    Geometry::Convex(shape) => Against::Convex(shape, o.pose, o.delta),
+                    Geometry::HalfSpace(m) => Against::Plane(*m, o.pose, o.delta),
+                    Geometry::Points { .. } => return Verdict::Keep,
+                };
+                let need = add_up(sa, self.padding);
+                if let Some(leaf) = leaf_a {
+                    stats.leaf_tests += 1;
+                    let tri = placed_corners(ta, leaf, ma);
+                    // First the cheap slab gap along the leaf ball's
+                    // direction to the shape.
+                    if against.triangle_slab(&tri, ca, ma.delta) > need {
+                        return Verdict::Clear;
+                    }
+                    let (gap, estimate) = against.triangle_gap(&tri, ma.delta);
+                    return self.leaf_verdict(gap, estimate, need);
+                }
+                let mut gap = against.ball_gap(ca, ra, ma.delta);
+                if gap <= need {
+                    // The box's slab gap along the direction from its centre
+                    // to the shape: tighter for flat or long nodes.
+                    let c = ma.pose.transform_point(na.obb.centre);
+                    if let Some(n) = against.towards(c) {
+                        let hi = box_support_up(&na.obb, ma, n);
+                        let weight = sum_up(c.norm_l1(), na.obb.reach_up());
+                        gap = gap.max_nan(against.slab(hi, weight, ma.delta, n));
+                    }
+                }
+                if gap > need {
+                    Verdict::Clear
+                } else if ra > self.refine_below(gap, sa) {
+                    Verdict::SplitLink
+                } else {
+                    Verdict::Keep
+                }
+            }
+            Target::Cloud(s, k) => {
+                let o = &self.shapes[s as usize];
+                let Geometry::Points { tree, radius, ball } = &o.geometry else {
+                    return Verdict::Keep;
+                };
+                let nb = &tree.nodes()[k as usize];
+                let cb = Vec3::from_array(*nb.ball.centre());
+                let rb = sum_up(nb.ball.radius(), *radius);
+                let reach = sum_up(ma.reach, sum_up(cb.length(), rb));
+                let gap = gap_down((cb - ca).length() - ra - rb, ma.delta, o.delta, reach);
+                let need = add_up(sa, self.padding);
+                if gap > need {
+                    return Verdict::Clear;
+                }
+                let leaf_b = nb.left == NO_CHILD;
+                match (leaf_a, leaf_b) {
+                    (Some(leaf), true) => {
+                        stats.leaf_tests += 1;
+                        let tri = placed_corners(ta, leaf, ma);
+                        let points = node_points(tree, nb.start, nb.end);
+                        let (gap, estimate) =
+                            triangle_points_gap(&tri, ma.delta, points, ball, o.delta);
+                        self.leaf_verdict(gap, estimate, need)
+                    }
+                    _ => split(
+                        leaf_a.is_none(),
+                        ra,
+                        !leaf_b,
+                        rb,
+                        self.refine_below(gap, sa),
+                    ),
+                }
+            }
+            Target::Mesh(ob, k) => {
+                let o = &self.segment.obstacles[ob as usize];
+                let tb = &o.tree.whole;
+                let mb = &still[ob as usize];
+                self.node_pair(stats, (ta, it.node, ma, sa), (tb, k, mb, T::ZERO), (ca, ra))
+            }
+            Target::Link(b, k) => {
+                let Some(tb) = self.link_tree(b) else {
+                    return Verdict::Clear;
+                };
+                let mb = &motions[it.slot_b as usize];
+                let nb = &tb.nodes[k as usize];
+                let cb = mb.pose.transform_point(*nb.ball.centre());
+                if sweeps[1] < T::ZERO {
+                    sweeps[1] = mul_up(mb.dt, mb.sweep_speed(cb, nb.ball.radius()));
+                }
+                let sb = sweeps[1];
+                self.node_pair(stats, (ta, it.node, ma, sa), (tb, k, mb, sb), (ca, ra))
+            }
+        }
+    }
+
+    /// Two nodes of placed hierarchies, each sweeping `s` over the
+    /// interval: clear when the balls' certified gap exceeds both sweeps;
+    /// at two leaves, the triangles' exact distance.
+    #[allow(clippy::type_complexity)]
+    fn node_pair(
+        &self,
+        stats: &mut EdgeStats,
+        (ta, ia, ma, sa): (&Hierarchy<T>, u32, &LinkMotion<T>, T),
+        (tb, ib, mb, sb): (&Hierarchy<T>, u32, &LinkMotion<T>, T),
+        (ca, ra): (Vec3<T>, T),
+    ) -> Verdict {
+        let na = &ta.nodes[ia as usize];
+        let nb = &tb.nodes[ib as usize];
+        let cb = mb.pose.transform_point(*nb.ball.centre());
+        let rb = nb.ball.radius();
+        let gap = gap_down(
+            (cb - ca).length() - ra - rb,
+            ma.delta,
+            mb.delta,
+            ma.reach + mb.reach,
+        );
+        let sweep = add_up(sa, sb);
+        let need = add_up(sweep, self.padding);
+        if gap > need {
+            return Verdict::Clear;
+        }
+        // The boxes' slab gap along the centre line: much tighter than the
+        // balls for flat or long nodes.
+        let gap = match (cb - ca).try_normalize() {
+            Some(n) => {
+                let hi_a = box_support_up(&na.obb, ma, n);
+                let lo_b = -box_support_up(&nb.obb, mb, -n);
+                gap.max_nan(gap_down(
+                    lo_b - hi_a,
+                    ma.delta,
+                    mb.delta,
+                    ma.reach + mb.reach,
+                ))
+            }
+            None => gap,
+        };
+        if gap > need {
+            return Verdict::Clear;
+        }
+        match (na.leaf(), nb.leaf()) {
+            (Some(la), Some(lb)) => {
+                stats.leaf_tests += 1;
+                let pa = placed_corners(ta, la, ma);
+                let pb = placed_corners(tb, lb, mb);
+                // First the cheap slab gaps: along the balls' centre line,
+                // then along each triangle's normal (turned towards the
+                // other): near surfaces face each other.
+                let line = cb - ca;
+                let facing = |t: &[Vec3<T>; 3], sign: T| {
+                    let n = (t[1] - t[0]).cross(t[2] - t[0]);
+                    if n.dot(line) * sign < T::ZERO {
+                        -n
+                    } else {
+                        n
+                    }
+                };
+                for d in [line, facing(&pa, T::ONE), facing(&pb, -T::ONE)] {
+                    if slab_gap(&pa, &pb, d, ma, mb, T::ZERO) > need {
+                        return Verdict::Clear;
+                    }
+                }
+                let cp = triangle_triangle_vec(&pa, &pb);
+                let gap = slab_gap(&pa, &pb, cp.on_b - cp.on_a, ma, mb, T::ZERO);
+                self.leaf_verdict(gap, cp.distance, need)
+            }
+            (a, b) => split(
+                a.is_none(),
+                ra,
+                b.is_none(),
+                rb,
+                self.refine_below(gap, sweep),
+            ),
+        }
+    }
+
+    /// The ball size below which a node that is not clear is kept for the
+    /// halves rather than refined: the sweep, except where the balls meet
+    /// at the interval's middle (`gap` within the padding), where refining
+    /// looks for a contact at that time (a colliding edge is then found at
+    /// its first sample rather than after halving down to the ball's size).
+    #[inline]
+    fn refine_below(&self, gap: T, sweep: T) -> T {
+        if gap > self.padding {
+            sweep
+        } else {
+            T::ZERO
+        }
+    }
+
+    /// At a leaf: touching when the computed distance is within the contact
+    /// distance (and padding), clear when the certified gap exceeds what
+    /// the sweeps need, else checked again on the halves.
+    fn leaf_verdict(&self, gap: T, estimate: T, need: T) -> Verdict {
+        if estimate <= self.touch || estimate.is_nan() {
+            Verdict::Contact
+        } else if gap > need {
+            Verdict::Clear
+        } else {
+            Verdict::Keep
+        }
+    }
+}
+
+/// An upper bound of `x . n` over the exact placed box of a link (or
+/// obstacle) node, for the computed unit `n` (Lemma 13.6): the placed
+/// centre's `c . n` plus the box's support about its centre along
+/// `fl(R^T n)`, widened by the box's error weight times the rotation's error
+/// `epsilon_R` (Lemma 13.3) and the direction's rounding `8 u`; the placed
+/// centre's own error is `delta`, taken by the caller's `gap_down`.
+#[inline]
+fn box_support_up<T: Float>(obb: &OrientedBox<T>, m: &LinkMotion<T>, n: Vec3<T>) -> T {
+    let c = m.pose.transform_point(obb.centre);
+    let local = obb.support_raw(m.pose.inverse_transform_vector(n)) * (T::ONE + gamma::<T>(4));
+    let widen = obb.error_weight * (m.axis_err + T::from_u32(8) * T::UNIT_ROUNDOFF);
+    c.dot(n) + (local + widen) * (T::ONE + gamma::<T>(2))
+}
+
+/// The two children ordered `(nearer, farther)` by `far` (the nearer is
+/// pushed last, so taken first). Only the search's order depends on it.
+#[inline]
+fn nearer_last<T: Float>(a: u32, b: u32, far: impl Fn(u32) -> T) -> (u32, u32) {
+    if far(a) <= far(b) {
+        (a, b)
+    } else {
+        (b, a)
+    }
+}
+
+/// Which side of a node pair that is not clear to refine: the larger ball
+/// that is still larger than the sweep (refining it can clear the pair),
+/// else none (the interval is halved instead).
+fn split<T: Float>(inner_a: bool, ra: T, inner_b: bool, rb: T, sweep: T) -> Verdict {
+    let a = inner_a && ra > sweep;
+    let b = inner_b && rb > sweep;
+    match (a, b) {
+        (true, true) if ra >= rb => Verdict::SplitLink,
+        (true, false) => Verdict::SplitLink,
+        (_, true) => Verdict::SplitTarget,
+        _ => Verdict::Keep,
+    }
+}
