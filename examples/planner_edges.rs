@@ -279,6 +279,7 @@ fn main() -> Result<(), Error> {
     let seed: u64 = args.value_or("--seed", 1);
     let write: String = args.value_or("--write-edges", String::new());
     let only: String = args.value_or("--scene", String::new());
+    let first = args.flag("--first-contact");
     args.finish();
     let (arm, _) = bare_arm_scene(Arm::Panda)?;
     let limits: Vec<[f64; 2]> = arm
@@ -336,9 +337,14 @@ fn main() -> Result<(), Error> {
         let mut times = Vec::with_capacity(edges);
         let (mut colliding, mut undecided, mut tests, mut intervals) = (0, 0, 0usize, 0usize);
         let mut verdicts = Vec::with_capacity(edges);
+        let mut work = Vec::with_capacity(edges);
         for (q0, q1) in &list {
             let start = Instant::now();
-            let report = checker.check(q0, q1)?;
+            let report = if first {
+                checker.check(q0, q1)?
+            } else {
+                checker.check_any(q0, q1)?
+            };
             times.push(start.elapsed().as_secs_f64());
             tests += report.stats.tests;
             intervals += report.stats.intervals;
@@ -351,6 +357,7 @@ fn main() -> Result<(), Error> {
                 _ => colliding += 1,
             }
             verdicts.push(report.outcome);
+            work.push(report.stats.tests);
             if std::env::var_os("PE_SLOW").is_some() && times[times.len() - 1] > 3e-3 {
                 println!(
                     "    slow {:.2} ms: {:?} {:?}",

@@ -155,6 +155,10 @@ pub(super) struct EdgeWork<T> {
     /// when not yet computed.
     stack: Vec<(Item, [T; 2])>,
     stats: EdgeStats,
+    /// The intervals of one length and of the next (breadth first): each
+    /// interval and the range of its items in `items`.
+    level: Vec<([T; 2], usize, usize)>,
+    next: Vec<([T; 2], usize, usize)>,
 }
 
 /// The scene along one edge, as the engine sees it.
@@ -167,6 +171,10 @@ pub(super) struct Edge<'a, T: 'static> {
     /// What a certified gap must exceed.
     pub(super) padding: T,
     pub(super) budget: usize,
+    /// Whether a contact found must be the first one (depth first in time,
+    /// [`by_time`](Self::by_time)), or any one will do
+    /// ([`coarse_first`](Self::coarse_first)).
+    pub(super) first_contact: bool,
 }
 
 impl<T: Float> Edge<'_, T> {
@@ -200,7 +208,12 @@ impl<T: Float> Edge<'_, T> {
         w.items.clear();
         w.items.extend_from_slice(initial);
         let n = w.items.len();
-        let outcome = match self.interval(w, slots, T::ZERO, T::ONE, 0, n) {
+        let found = if self.first_contact {
+            self.by_time(w, slots, [T::ZERO, T::ONE], 0, n)
+        } else {
+            self.coarse_first(w, slots, n)
+        };
+        let outcome = match found {
             Ok(()) => EdgeOutcome::Free,
             Err((t0, Stop::Contact { at, pair })) => EdgeOutcome::Contact {
                 free_until: t0,
@@ -215,38 +228,105 @@ impl<T: Float> Edge<'_, T> {
         }
     }
 
-    /// Checks the items `start..end` over `[t0, t1]`; on a stop, the
-    /// interval's start (everything before it is certified free) and why.
-    fn interval(
+    /// Checks the items `start..end` over `[t0, t1]` and its halves, the
+    /// earlier half first (depth first in time); on a stop, the interval's
+    /// start (everything before it is certified free) and why.
+    fn by_time(
         &self,
         w: &mut EdgeWork<T>,
         slots: &[(usize, usize)],
-        t0: T,
-        t1: T,
+        [t0, t1]: [T; 2],
         start: usize,
         end: usize,
     ) -> Result<(), (T, Stop<T>)> {
+        let kept = w.items.len();
+        let mid = self
+            .check_interval(w, slots, [t0, t1], start, end)
+            .map_err(|s| (t0, s))?;
+        let survivors = w.items.len();
+        if survivors > kept {
+            let first = self.by_time(w, slots, [t0, mid], kept, survivors);
+            let result = first.and_then(|()| self.by_time(w, slots, [mid, t1], kept, survivors));
+            w.items.truncate(kept);
+            return result;
+        }
+        Ok(())
+    }
+
+    /// The same checks, breadth first: every interval of one length before
+    /// any shorter one, so that a contact anywhere on the edge is met at the
+    /// coarsest sampling that shows it (what a yes-or-no edge check wants).
+    /// On a stop, the earliest start of an interval not yet certified.
+    fn coarse_first(
+        &self,
+        w: &mut EdgeWork<T>,
+        slots: &[(usize, usize)],
+        n: usize,
+    ) -> Result<(), (T, Stop<T>)> {
+        let mut level = core::mem::take(&mut w.level);
+        let mut next = core::mem::take(&mut w.next);
+        level.clear();
+        level.push(([T::ZERO, T::ONE], 0, n));
+        let mut result = Ok(());
+        'levels: while !level.is_empty() {
+            next.clear();
+            for &(span, start, end) in &level {
+                let kept = w.items.len();
+                match self.check_interval(w, slots, span, start, end) {
+                    Ok(mid) => {
+                        let survivors = w.items.len();
+                        if survivors > kept {
+                            next.push(([span[0], mid], kept, survivors));
+                            next.push(([mid, span[1]], kept, survivors));
+                        }
+                    }
+                    Err(stop) => {
+                        let pending = next.first().map_or(span[0], |i| i.0[0]);
+                        result = Err((pending, stop));
+                        break 'levels;
+                    }
+                }
+            }
+            core::mem::swap(&mut level, &mut next);
+        }
+        w.level = level;
+        w.next = next;
+        result
+    }
+
+    /// Places the chain at the middle of `[t0, t1]` and tests the items
+    /// `start..end` over the interval, appending those not clear to
+    /// `w.items`; the middle, or why the query stops.
+    fn check_interval(
+        &self,
+        w: &mut EdgeWork<T>,
+        slots: &[(usize, usize)],
+        [t0, t1]: [T; 2],
+        start: usize,
+        end: usize,
+    ) -> Result<T, Stop<T>> {
         let chain = self.segment.chain;
         // Dyadic ends: the middle is exact, and so is the half width
         // (rounded up all the same).
         let mid = (t0 + t1) * T::HALF;
         let half = diff_up(t1, mid);
-        if !(mid > t0 && mid < t1) {
-            return Err((t0, Stop::Undecided));
+        // An interval too short to halve (a point `[t, t]` is a static
+        // check, and fine).
+        if !(mid > t0 && mid < t1) && t0 != t1 {
+            return Err(Stop::Undecided);
         }
         w.stats.intervals += 1;
         self.segment.place(&mut w.work, mid);
         for (m, &(link, skip)) in w.motions.iter_mut().zip(slots) {
             w.work.fill(chain, m, link, skip, half);
         }
-        let kept = w.items.len();
         for i in start..end {
             w.stack.push((w.items[i], [-T::ONE; 2]));
             while let Some((it, mut sweeps)) = w.stack.pop() {
                 w.stats.tests += 1;
                 if w.stats.tests > self.budget {
                     w.stack.clear();
-                    return Err((t0, Stop::Undecided));
+                    return Err(Stop::Undecided);
                 }
                 match self.test(&w.motions, &w.still, &mut w.stats, it, &mut sweeps) {
                     Verdict::Clear => {}
@@ -271,25 +351,15 @@ impl<T: Float> Edge<'_, T> {
                     Verdict::SplitTarget => self.split_target(w, it, sweeps),
                     Verdict::Contact => {
                         w.stack.clear();
-                        return Err((
-                            t0,
-                            Stop::Contact {
-                                at: mid,
-                                pair: self.pair(it),
-                            },
-                        ));
+                        return Err(Stop::Contact {
+                            at: mid,
+                            pair: self.pair(it),
+                        });
                     }
                 }
             }
         }
-        let survivors = w.items.len();
-        if survivors > kept {
-            let first = self.interval(w, slots, t0, mid, kept, survivors);
-            let result = first.and_then(|()| self.interval(w, slots, mid, t1, kept, survivors));
-            w.items.truncate(kept);
-            return result;
-        }
-        Ok(())
+        Ok(mid)
     }
 
     /// Link `link`'s hierarchy (`None` for a link without geometry, which
@@ -561,21 +631,31 @@ impl<T: Float> Edge<'_, T> {
         if gap > need {
             return Verdict::Clear;
         }
-        // The boxes' slab gap along the centre line: much tighter than the
-        // balls for flat or long nodes.
-        let gap = match (cb - ca).try_normalize() {
+        // The boxes' slab gaps: along the centre line, then along the
+        // thinnest axis of the larger box (a plate's normal): much tighter
+        // than the balls for flat or long nodes.
+        let line = cb - ca;
+        let box_gap = |d: Vec3<T>| match d.try_normalize() {
             Some(n) => {
+                let n = if n.dot(line) < T::ZERO { -n } else { n };
                 let hi_a = box_support_up(&na.obb, ma, n);
                 let lo_b = -box_support_up(&nb.obb, mb, -n);
-                gap.max_nan(gap_down(
-                    lo_b - hi_a,
-                    ma.delta,
-                    mb.delta,
-                    ma.reach + mb.reach,
-                ))
+                gap_down(lo_b - hi_a, ma.delta, mb.delta, ma.reach + mb.reach)
             }
-            None => gap,
+            None => -T::INFINITY,
         };
+        let mut gap = gap.max_nan(box_gap(line));
+        if gap > need {
+            return Verdict::Clear;
+        }
+        let (thin, m) = if rb > ra {
+            (&nb.obb, mb)
+        } else {
+            (&na.obb, ma)
+        };
+        gap = gap.max_nan(box_gap(
+            m.pose.transform_vector(Vec3::from_array(thin.axes[2])),
+        ));
         if gap > need {
             return Verdict::Clear;
         }

@@ -618,6 +618,16 @@ impl<T: Float> EdgeChecker<'_, T> {
     /// # Errors
     /// As [`ChainScene::check_segment`].
     pub fn check(&mut self, q0: &[T], q1: &[T]) -> Result<EdgeReport<T>, ChainError> {
+        self.run(q0, q1, true)
+    }
+
+    /// The query: the first contact when `first_contact`, else any.
+    fn run(
+        &mut self,
+        q0: &[T],
+        q1: &[T],
+        first_contact: bool,
+    ) -> Result<EdgeReport<T>, ChainError> {
         let scene = self.scene;
         scene.check_end(q0)?;
         scene.check_end(q1)?;
@@ -627,6 +637,7 @@ impl<T: Float> EdgeChecker<'_, T> {
             touch: scene.params.contact_distance + scene.params.padding,
             padding: scene.params.padding,
             budget: scene.params.edge_budget,
+            first_contact,
         };
         Ok(edge.run(&self.initial, &self.slots, &mut self.work))
     }
@@ -636,7 +647,20 @@ impl<T: Float> EdgeChecker<'_, T> {
     /// # Errors
     /// As [`ChainScene::check_segment`].
     pub fn is_free(&mut self, q0: &[T], q1: &[T]) -> Result<bool, ChainError> {
-        Ok(self.check(q0, q1)?.outcome.is_free())
+        Ok(self.check_any(q0, q1)?.outcome.is_free())
+    }
+
+    /// [`check`](Self::check) for a yes-or-no answer: the intervals are
+    /// taken coarsest first, so a contact anywhere on the edge ends the
+    /// query as soon as a sampling shows it (a planner's colliding edges
+    /// cost least). The contact reported need not be the first: the
+    /// segment is certified free only up to `free_until`, the earliest time
+    /// not yet cleared.
+    ///
+    /// # Errors
+    /// As [`ChainScene::check_segment`].
+    pub fn check_any(&mut self, q0: &[T], q1: &[T]) -> Result<EdgeReport<T>, ChainError> {
+        self.run(q0, q1, false)
     }
 }
 
