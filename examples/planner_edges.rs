@@ -306,6 +306,17 @@ fn main() -> Result<(), Error> {
                 scene.add_shape(s);
             }
         }
+        if let Ok(pair) = std::env::var("PE_PAIR") {
+            let p: Vec<usize> = pair.split(',').filter_map(|x| x.parse().ok()).collect();
+            let n = scene.chain().link_count();
+            for a in 0..n {
+                for b in 0..n {
+                    if a != b && !(a.min(b) == p[0].min(p[1]) && a.max(b) == p[0].max(p[1])) {
+                        scene.allow_collision(a, b);
+                    }
+                }
+            }
+        }
         if std::env::var_os("PE_NOSELF").is_some() {
             let n = scene.chain().link_count();
             for a in 0..n {
