@@ -369,7 +369,13 @@ fn main() -> Result<(), Error> {
             }
             verdicts.push(report.outcome);
             work.push(report.stats.tests);
-            if std::env::var_os("PE_SLOW").is_some() && times[times.len() - 1] > 3e-3 {
+            if std::env::var_os("PE_SLOW").is_some()
+                && times[times.len() - 1]
+                    > std::env::var("PE_SLOW")
+                        .ok()
+                        .and_then(|v| v.parse().ok())
+                        .unwrap_or(3e-3)
+            {
                 println!(
                     "    slow {:.2} ms: {:?} {:?}",
                     times[times.len() - 1] * 1e3,

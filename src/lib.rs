@@ -158,7 +158,11 @@
 //! `q0 -> q1` against still obstacles and itself by conservative advancement
 //! with a directed bound through the joints above each link
 //! ([`proofs::chains`]): the first contact, never later than the first touch,
-//! or `Separated`. See the [`chain`] module.
+//! or `Separated`. A planner's motion validator calls
+//! [`chain::ChainScene::edge_is_free`] (or a reused [`chain::EdgeChecker`]):
+//! the edge certified in one pass per time interval, against meshes, shape
+//! obstacles ([`chain::ShapeObstacle`]: primitives, half-spaces, point
+//! clouds) and the arm itself. See the [`chain`] module.
 //!
 //! ## Conventions
 //!

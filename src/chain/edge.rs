@@ -185,6 +185,51 @@ impl<T: Float> Edge<'_, T> {
         slots: &[(usize, usize)],
         w: &mut EdgeWork<T>,
     ) -> EdgeReport<T> {
+        let n = self.prepare(initial, slots, w);
+        let found = if self.first_contact {
+            self.by_time(w, slots, [T::ZERO, T::ONE], 0, n)
+        } else {
+            self.coarse_first(w, slots, n)
+        };
+        let outcome = match found {
+            Ok(()) => EdgeOutcome::Free,
+            Err((t0, Stop::Contact { at, pair })) => EdgeOutcome::Contact {
+                free_until: t0,
+                at,
+                pair,
+            },
+            Err((t0, Stop::Undecided)) => EdgeOutcome::Undecided { free_until: t0 },
+        };
+        EdgeReport {
+            outcome,
+            stats: w.stats,
+        }
+    }
+
+    /// The static check at the segment's start (`q0`; the caller passes
+    /// `q1 = q0`): a pair whose surfaces are within `touch` there (computed
+    /// distance), or one that no certified gap shows apart by more than the
+    /// padding (a tie within rounding, taken as touching); `None` when every
+    /// pair is certified apart.
+    pub(super) fn static_check(
+        &self,
+        initial: &[Item],
+        slots: &[(usize, usize)],
+        w: &mut EdgeWork<T>,
+    ) -> Option<ChainPair> {
+        let n = self.prepare(initial, slots, w);
+        match self.check_interval(w, slots, [T::ZERO, T::ZERO], 0, n) {
+            Ok(_) => w.items.get(n).map(|&it| self.pair(it)),
+            Err(Stop::Contact { pair, .. }) => Some(pair),
+            // Not reached (a point is never halved and the budget is
+            // checked): the first item, conservatively.
+            Err(Stop::Undecided) => initial.first().map(|&it| self.pair(it)),
+        }
+    }
+
+    /// The rates, errors, still motions and initial items of a query; the
+    /// number of initial items.
+    fn prepare(&self, initial: &[Item], slots: &[(usize, usize)], w: &mut EdgeWork<T>) -> usize {
         let chain = self.segment.chain;
         let (q0, q1) = (self.segment.q0, self.segment.q1);
         w.stats = EdgeStats::default();
@@ -207,25 +252,7 @@ impl<T: Float> Edge<'_, T> {
         }
         w.items.clear();
         w.items.extend_from_slice(initial);
-        let n = w.items.len();
-        let found = if self.first_contact {
-            self.by_time(w, slots, [T::ZERO, T::ONE], 0, n)
-        } else {
-            self.coarse_first(w, slots, n)
-        };
-        let outcome = match found {
-            Ok(()) => EdgeOutcome::Free,
-            Err((t0, Stop::Contact { at, pair })) => EdgeOutcome::Contact {
-                free_until: t0,
-                at,
-                pair,
-            },
-            Err((t0, Stop::Undecided)) => EdgeOutcome::Undecided { free_until: t0 },
-        };
-        EdgeReport {
-            outcome,
-            stats: w.stats,
-        }
+        w.items.len()
     }
 
     /// Checks the items `start..end` over `[t0, t1]` and its halves, the

@@ -26,6 +26,15 @@
 //!   below it count.
 //! * **Rounding** (Lemma 13.3): forward kinematics' error, a formula in `u`.
 //!
+//! **A planner's edges** (Lemmas 13.5 and 13.6):
+//! [`ChainScene::edge_is_free`], [`ChainScene::check_edge`] and an
+//! [`EdgeChecker`] for many edges place the chain once per time interval,
+//! clear every link's ball (or box, or triangle) whose certified gap exceeds
+//! what it can sweep in that interval, and refine down the link trees or
+//! halve the interval only where one is not clear; obstacles may be meshes
+//! ([`Obstacle`]) or shapes ([`ShapeObstacle`]: convex primitives,
+//! half-spaces, point clouds), never meshed.
+//!
 //! [`ChainScene`] holds a chain and still [`Obstacle`]s; its
 //! [`check_segment`](ChainScene::check_segment) runs conservative
 //! advancement per pair (after a broad phase of swept balls per

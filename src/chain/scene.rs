@@ -284,7 +284,7 @@ impl<T: Float> ChainScene<T> {
         self.edge_checker().is_free(q0, q1)
     }
 
-    /// The edge query's full answer: [`EdgeOutcome::Free`], a contact (the
+    /// The edge query's full answer: [`EdgeOutcome::Free`](crate::chain::EdgeOutcome::Free), a contact (the
     /// segment certified free up to its time, never later than the first
     /// touch), or undecided when [`ChainParams::edge_budget`] ran out; and
     /// the work done.
@@ -440,13 +440,16 @@ impl<T: Float> ChainScene<T> {
     }
 
     /// Whether some checked pair's surfaces meet at configuration `q` (a
-    /// triangle pair at computed distance 0): the static check a discrete
-    /// motion validator runs at each sample. Stops at the first such pair.
+    /// triangle pair, or a triangle and a shape, at computed distance at
+    /// most [`ChainParams::padding`], 0 by default): the static check a
+    /// discrete motion validator runs at each sample, against meshes and
+    /// shapes. Stops at the first such pair
+    /// ([`EdgeChecker::collides_at`] reuses its buffers).
     ///
     /// # Errors
     /// [`ChainError::WrongDof`] and [`ChainError::NonFiniteCoordinate`].
     pub fn collides_at(&self, q: &[T]) -> Result<bool, ChainError> {
-        Ok(!self.touching_pairs(q, T::ZERO, true)?.is_empty())
+        self.edge_checker().collides_at(q)
     }
 
     /// Never checks again the pairs of links whose surfaces are within
@@ -640,6 +643,33 @@ impl<T: Float> EdgeChecker<'_, T> {
             first_contact,
         };
         Ok(edge.run(&self.initial, &self.slots, &mut self.work))
+    }
+
+    /// [`ChainScene::collides_at`] with this checker's buffers: the pair
+    /// found touching at `q`, if any.
+    ///
+    /// # Errors
+    /// [`ChainError::WrongDof`] and [`ChainError::NonFiniteCoordinate`].
+    pub fn touching_at(&mut self, q: &[T]) -> Result<Option<ChainPair>, ChainError> {
+        let scene = self.scene;
+        scene.chain.check_q(q)?;
+        let edge = Edge {
+            segment: scene.segment_view(q, q),
+            shapes: &scene.shapes,
+            touch: scene.params.padding,
+            padding: scene.params.padding,
+            budget: usize::MAX,
+            first_contact: true,
+        };
+        Ok(edge.static_check(&self.initial, &self.slots, &mut self.work))
+    }
+
+    /// Whether some checked pair touches at `q` ([`touching_at`](Self::touching_at)).
+    ///
+    /// # Errors
+    /// [`ChainError::WrongDof`] and [`ChainError::NonFiniteCoordinate`].
+    pub fn collides_at(&mut self, q: &[T]) -> Result<bool, ChainError> {
+        Ok(self.touching_at(q)?.is_some())
     }
 
     /// [`ChainScene::edge_is_free`] with this checker's buffers.
