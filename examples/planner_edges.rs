@@ -272,7 +272,7 @@ fn edge(rng: &mut Rng, limits: &[[f64; 2]]) -> (Vec<f64>, Vec<f64>) {
 
 fn main() -> Result<(), Error> {
     let mut args = Args::from_env(
-        "planner_edges [--edges 10000] [--truth 500] [--seed 1] [--scene S] [--write-edges DIR]",
+        "planner_edges [--edges 10000] [--truth 500] [--seed 1] [--scene S] [--write-edges DIR] [--vamp DIR] [--first-contact]",
     );
     let edges: usize = args.value_or("--edges", 10_000);
     let truth_edges: usize = args.value_or("--truth", 500);
@@ -280,6 +280,7 @@ fn main() -> Result<(), Error> {
     let write: String = args.value_or("--write-edges", String::new());
     let only: String = args.value_or("--scene", String::new());
     let first = args.flag("--first-contact");
+    let vamp: String = args.value_or("--vamp", String::new());
     args.finish();
     let (arm, _) = bare_arm_scene(Arm::Panda)?;
     let limits: Vec<[f64; 2]> = arm
@@ -405,9 +406,24 @@ fn main() -> Result<(), Error> {
             println!("  free {nf} mean us {:.1} (sum ms {:.1}); contact at 0 {n0} mean us {:.1} (sum ms {:.1}); contact later {nc} mean us {:.1} (sum ms {:.1})",
                 tf / nf.max(1) as f64 * 1e6, tf * 1e3, t0 / n0.max(1) as f64 * 1e6, t0 * 1e3, tc / nc.max(1) as f64 * 1e6, tc * 1e3);
         }
+        // VAMP's verdicts on the same edges (`compare/vamp/`: 1 = colliding), if given.
+        let vamp_verdicts: Option<Vec<bool>> = if vamp.is_empty() {
+            None
+        } else {
+            let text = std::fs::read_to_string(format!("{vamp}/{name}.verdicts"))?;
+            Some(text.lines().map(|l| l.trim() == "1").collect())
+        };
+        let (mut vamp_missed, mut vamp_false) = (0, 0);
         let (mut missed, mut late, mut truth_colliding) = (0, 0, 0);
-        for ((q0, q1), outcome) in list.iter().zip(&verdicts).take(truth_edges) {
+        for (e, ((q0, q1), outcome)) in list.iter().zip(&verdicts).take(truth_edges).enumerate() {
             let sampled = truth.sample(q0, q1, 1e-4);
+            if let Some(v) = vamp_verdicts.as_ref().and_then(|v| v.get(e)) {
+                match (sampled.touch.is_some(), *v) {
+                    (true, false) => vamp_missed += 1,
+                    (false, true) if sampled.min_distance > 0.0 => vamp_false += 1,
+                    _ => {}
+                }
+            }
             if let Some((t_touch, _, _)) = sampled.touch {
                 truth_colliding += 1;
                 match *outcome {
@@ -421,6 +437,13 @@ fn main() -> Result<(), Error> {
                     _ => {}
                 }
             }
+        }
+        if let Some(v) = &vamp_verdicts {
+            println!(
+                "  VAMP on the same edges: colliding {} of {}; over the truth's edges: free where the truth touches {vamp_missed}, colliding where it never touches {vamp_false}",
+                v.iter().filter(|&&x| x).count(),
+                v.len()
+            );
         }
         let mean = times.iter().sum::<f64>() / edges as f64;
         let mut sorted = times.clone();

@@ -30,7 +30,7 @@ pub struct ChainParams<T> {
     /// The most items (a ball or triangle against what it is checked
     /// against) an edge query tests before it answers
     /// [`EdgeOutcome::Undecided`](crate::chain::EdgeOutcome::Undecided)
-    /// (default 400,000: about 50 ms on the Panda, `docs/performance.md`).
+    /// (default 250,000: about 40 ms on the Panda's meshes, `docs/performance.md`).
     pub edge_budget: usize,
 }
 
@@ -42,7 +42,7 @@ impl<T: Float> Default for ChainParams<T> {
             broad_pieces: 32,
             within_limits: true,
             padding: T::ZERO,
-            edge_budget: 400_000,
+            edge_budget: 250_000,
         }
     }
 }
