@@ -12,7 +12,8 @@
 //! Run with `cargo run --release --example coarse_fine` (`--queries N`,
 //! default 200; `--spin S`, default 4; `--seed S`; `--no-truth` for the
 //! work and times alone; `--only coarse|fine` for one board, e.g. under
-//! callgrind).
+//! callgrind; `--piece L` builds the coarse board's pieces at length `L`,
+//! `BallTree::try_with_piece_length`, instead of the default).
 //!
 //! Ground truth, independent of the code under test: each query is sampled
 //! up to its reported time, densely enough that the fastest point moves
@@ -31,7 +32,6 @@
 //! then the ratios coarse / fine of the mean and the 99th percentile.
 
 #[path = "../tests/common/arm_scene.rs"]
-#[allow(dead_code)]
 mod arm_scene;
 #[path = "../tests/common/meshes.rs"]
 mod meshes;
@@ -160,6 +160,9 @@ impl Tally {
         }
         let most_it = self.queries.iter().map(|q| q.iterations).max().unwrap_or(0);
         let most_np = self.queries.iter().map(|q| q.node_pairs).max().unwrap_or(0);
+        let mut np: Vec<u64> = self.queries.iter().map(|q| q.node_pairs).collect();
+        np.sort_unstable();
+        let p99_np = np[((0.99 * np.len() as f64).ceil() as usize).clamp(1, np.len()) - 1];
         let most_tp = self
             .queries
             .iter()
@@ -168,7 +171,7 @@ impl Tally {
             .unwrap_or(0);
         println!(
             "{name}: {} triangles, {} piece leaves; queries {}, mean ms {:.3}, p99 ms {:.3}, \
-             iterations mean {:.1} max {most_it}, node pairs mean {:.0} max {most_np}, \
+             iterations mean {:.1} max {most_it}, node pairs mean {:.0} p99 {p99_np} max {most_np}, \
              triangle pairs mean {:.0} max {most_tp}, C {} I {} S {} O {}, missed {}, late {}",
             tree.triangle_count(),
             tree.piece_leaf_count(),
@@ -218,7 +221,7 @@ fn query(
 
 fn main() {
     let mut args = Args::from_env(
-        "coarse_fine [--queries 200] [--spin 4] [--seed 43] [--no-truth] [--only coarse|fine] [--bunny 0.5]",
+        "coarse_fine [--queries 200] [--spin 4] [--seed 43] [--no-truth] [--only coarse|fine] [--bunny 0.5] [--piece L]",
     );
     let queries: usize = args.value_or("--queries", 200);
     let spin: f64 = args.value_or("--spin", 4.0);
@@ -226,9 +229,18 @@ fn main() {
     let truth = !args.flag("--no-truth");
     let only: Option<String> = args.value("--only");
     let bunny_reach: f64 = args.value_or("--bunny", 0.5);
+    let piece: Option<f64> = args.value("--piece");
     args.finish();
     let (coarse_mesh, fine_mesh, bunny_mesh) = (board(2.0), board(CELL), bunny(bunny_reach));
-    let coarse = BallTree::try_from_mesh(&coarse_mesh).expect("a tree");
+    let start = Instant::now();
+    let coarse = match piece {
+        Some(l) => {
+            BallTree::try_with_piece_length(coarse_mesh.vertices(), coarse_mesh.triangles(), l)
+        }
+        None => BallTree::try_from_mesh(&coarse_mesh),
+    }
+    .expect("a tree");
+    let coarse_build_ms = start.elapsed().as_secs_f64() * 1e3;
     let fine = BallTree::try_from_mesh(&fine_mesh).expect("a tree");
     let bunny = BallTree::try_from_mesh(&bunny_mesh).expect("a tree");
     let board_tris: Vec<[[f64; 3]; 3]> = coarse_mesh.triangle_corners().collect();
@@ -241,6 +253,7 @@ fn main() {
         fine_mesh.triangle_count(),
         bunny_mesh.triangle_count(),
     );
+    println!("coarse board's tree built in {coarse_build_ms:.1} ms (with its pieces)");
     let run_coarse = only.as_deref() != Some("fine");
     let run_fine = only.as_deref() != Some("coarse");
     let mut rng = Rng::new(seed);
