@@ -557,3 +557,18 @@ def test_chain_and_scene_pickle_and_answer_the_same(panda):
     for a, b in edges:
         x, y = scene.check_edge(a, b), back.check_edge(a, b)
         assert (x.outcome, x.free_until, x.at, x.pair) == (y.outcome, y.free_until, y.at, y.pair)
+
+
+def test_the_readme_planner_loop_runs(monkeypatch):
+    import re
+    here = pathlib.Path(__file__).resolve().parent.parent
+    text = (here / "README.md").read_text()
+    blocks = [b for b in re.findall(r"```python\n(.*?)```", text, re.S) if "ChainScene" in b]
+    assert len(blocks) == 1, "the README has one python block with a ChainScene"
+    monkeypatch.chdir(here)  # the block reads the URDF from python/
+    scope = {}
+    exec(compile(blocks[0], "README.md", "exec"), scope)
+    tree, scene = scope["tree"], scope["scene"]
+    assert len(tree) > 1
+    # Every node the loop added is the end of an edge certified free from some node.
+    assert all(scene.check_edge(q, q).free for q in tree[:50])
