@@ -337,7 +337,7 @@ impl Chain {
 enum Added {
     Body {
         body: Py<Body>,
-        pose: Pose,
+        pose: Box<Pose>,
         name: String,
     },
     Points {
@@ -651,7 +651,7 @@ impl ChainScene {
         let i = self.add_made(made);
         self.added.push(Added::Body {
             body: body.unbind(),
-            pose,
+            pose: Box::new(pose),
             name,
         });
         Ok(i)
@@ -1046,7 +1046,7 @@ impl ChainScene {
                     [
                         "body".into_pyobject(py)?.into_any(),
                         body.clone_ref(py).into_bound(py).into_any(),
-                        Bound::new(py, pose.clone())?.into_any(),
+                        Bound::new(py, Pose::clone(pose))?.into_any(),
                         name.into_pyobject(py)?.into_any(),
                     ],
                 )?,
