@@ -6,7 +6,7 @@ default) and 0.005. Not part of CI (OMPL is not a test dependency):
 
     pip install ompl        # a binary wheel (ompl 2.0.1 for CPython 3.11 on manylinux here)
     python examples/ompl_panda.py [--plans 50] [--timeout 10] [--scenes table_pick,cage]
-                                  [--seed 1] [--fine-step 1e-3]
+                                  [--seed 1] [--fine-step 1e-3] [--range 0]
 
 from `python/` (the data is read from `../data`). The arm: `data/arms/franka_panda/panda.urdf`
 (its collision meshes), both fingers held open at 0.04 m, the seven arm joints planned within the
@@ -126,7 +126,7 @@ class CertifiedEdges(ob.MotionValidator):
         return [s[i] for i in range(self.dim)] + [FINGERS, FINGERS]
 
 
-def plan_once(scene, validator, start, goal, limits, timeout):
+def plan_once(scene, validator, start, goal, limits, timeout, reach=0.0):
     """One RRT-Connect plan; returns (solved, seconds, motions checked, states checked, path)."""
     dim = 7
     space = ob.RealVectorStateSpace(dim)
@@ -155,7 +155,10 @@ def plan_once(scene, validator, start, goal, limits, timeout):
     for i in range(dim):
         a[i], b[i] = float(start[i]), float(goal[i])
     ss.setStartAndGoalStates(a, b)
-    ss.setPlanner(og.RRTConnect(si))
+    planner = og.RRTConnect(si)
+    if reach > 0:
+        planner.setRange(reach)
+    ss.setPlanner(planner)
     clock = time.perf_counter()
     solved = ss.solve(timeout)
     seconds = time.perf_counter() - clock
@@ -187,13 +190,15 @@ def main():
     ap.add_argument("--validators", default="ours,discrete 0.01,discrete 0.005")
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--fine-step", type=float, default=1e-3)
+    ap.add_argument("--range", type=float, default=0.0,
+                    help="RRT-Connect's range (rad; 0: OMPL's default, a fifth of the extent)")
     args = ap.parse_args()
     ou.setLogLevel(ou.LogLevel.LOG_WARN)
     ou.RNG.setSeed(args.seed)  # once, before any sampling: the runs are repeatable
     panda = mb.Chain.from_urdf(DATA / "arms" / "franka_panda" / "panda.urdf")
     limits = panda.limits
-    print(f"OMPL RRT-Connect, the Panda (meshes), {args.plans} plans per scene and validator, "
-          f"fine check every {args.fine_step} rad; CPU: {cpu_name()}")
+    print(f"OMPL RRT-Connect (range {args.range or 'default'}), the Panda (meshes), {args.plans} "
+          f"plans per scene and validator, fine check every {args.fine_step} rad; CPU: {cpu_name()}")
     for name in args.scenes.split(","):
         shapes, meshes, start, goal = scenes(panda, name)
         for q, what in ((start, "start"), (goal, "goal")):
@@ -203,7 +208,7 @@ def main():
             times, motions, states, touching, solved = [], [], [], 0, 0
             for _ in range(args.plans):
                 exact, seconds, m, s, path = plan_once(shapes, validator, start, goal, limits,
-                                                       args.timeout)
+                                                       args.timeout, args.range)
                 times.append(seconds)
                 motions.append(m)
                 states.append(s)

@@ -708,7 +708,8 @@ impl ChainScene {
     /// Never checks again the pairs of links whose surfaces are within
     /// `distance` (default 0: touching) at configuration `q` (an SRDF's
     /// pairs in collision by default, fingers closed on each other), and
-    /// returns them as name pairs.
+    /// returns them as name pairs. Call it before adding shape obstacles or
+    /// point clouds (`QueryError` after).
     #[pyo3(signature = (q, distance = 0.0))]
     fn allow_collisions_at(
         &mut self,
@@ -718,7 +719,12 @@ impl ChainScene {
     ) -> PyResult<Vec<(String, String)>> {
         let q = self.chain().coordinates(q, "q")?;
         crate::errors::length_arg(distance, "distance")?;
-        self.meshes_only("allow_collisions_at")?;
+        if !self.scene.shapes().is_empty() {
+            return Err(QueryError::new_err(
+                "allow_collisions_at measures on scenes of mesh obstacles only: call it before \
+                 adding shape obstacles or point clouds (the pairs it allows are link pairs)",
+            ));
+        }
         let scene = &mut self.scene;
         let pairs = py
             .detach(|| scene.allow_collisions_at(&q, distance))

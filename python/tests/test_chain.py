@@ -483,6 +483,8 @@ def test_bad_input_is_refused_naming_the_argument(panda, tmp_path):
         scene.collides_at(q)
     with pytest.raises(mb.QueryError, match="check_segment"):
         scene.check_segment(q, q)
+    with pytest.raises(mb.QueryError, match="call it before adding shape obstacles"):
+        scene.allow_collisions_at(q)
     with pytest.raises(KeyError, match="no link named"):
         scene.allow_collision("panda_link99", 0)
     with pytest.raises(IndexError, match="b index out of range"):
