@@ -2,6 +2,7 @@
 moving bodies, never late and never missed (conservative advancement with proven
 motion bounds; the Rust crate motion-bound)."""
 
+import os
 from typing import Any, Iterable, Literal, Optional, Tuple, Union
 
 import numpy as np
@@ -12,6 +13,7 @@ __version__: str
 
 ArrayLike = npt.ArrayLike
 PoseLike = Union["Pose", npt.ArrayLike]
+LinkLike = Union[str, int]
 Outcome = Literal[
     "contact", "initial_contact", "separated", "iteration_limit", "work_limit", "precision_limit"
 ]
@@ -31,6 +33,10 @@ class MeshError(MotionBoundError):
 class QueryError(MotionBoundError):
     """A query that cannot run (a parameter out of range, motions over different
     intervals, a turning half-space, two half-spaces)."""
+
+class UrdfError(MotionBoundError):
+    """A URDF file that cannot be parsed or uses what is not read (a COLLADA
+    mesh, a planar or floating joint, a mesh file that cannot be read)."""
 
 class Body:
     """A shape in its own frame (a mesh with its ball tree, built once);
@@ -285,3 +291,137 @@ class Scene:
 
 def table1_scene(size: Literal["2.8K", "11K", "34K"] = "2.8K", queries: int = 200) -> dict[str, Any]:
     """The seed's Table 1 torus knots and the Rust report's fly-by queries."""
+
+class Chain:
+    """A kinematic tree read from a URDF: its links' collision meshes (ball
+    trees built once) and joints. Immutable; pickles as its URDF path (the
+    file and its meshes must be readable where it is unpickled)."""
+
+    @staticmethod
+    def from_urdf(
+        path: Union[str, "os.PathLike[str]"],
+        base: Optional[PoseLike] = None,
+        package_root: Optional[Union[str, "os.PathLike[str]"]] = None,
+    ) -> Chain:
+        """Revolute, continuous, prismatic and fixed joints; OBJ and STL meshes
+        (boxes exact; cylinders, spheres, capsules as containing meshes).
+        `FileNotFoundError`, `UrdfError`, `MeshError`."""
+    @property
+    def dof(self) -> int: ...
+    @property
+    def link_names(self) -> list[str]: ...
+    @property
+    def joint_names(self) -> list[str]:
+        """The movable joints, in coordinate order."""
+    @property
+    def limits(self) -> np.ndarray:
+        """`(dof, 2)` of `[lower, upper]` (`[-inf, inf]` for a continuous joint)."""
+    @property
+    def path(self) -> str: ...
+    def link_index(self, name: str) -> int: ...
+    def link_mesh(self, link: LinkLike) -> Optional[Tuple[np.ndarray, np.ndarray]]:
+        """`(vertices, faces)` of the link's collision mesh in its frame, or None."""
+    def forward_kinematics(self, q: ArrayLike) -> np.ndarray:
+        """`(links, 4, 4)`: every link's world pose at `q`."""
+
+class EdgeReport:
+    """`ChainScene.check_edge`'s answer: free (certified), a contact (free on
+    `[0, free_until]`, the pair within the contact distance plus the padding at
+    `at`), or undecided (the edge budget ran out)."""
+
+    @property
+    def outcome(self) -> Literal["free", "contact", "undecided"]: ...
+    @property
+    def free(self) -> bool: ...
+    @property
+    def free_until(self) -> float: ...
+    @property
+    def at(self) -> Optional[float]: ...
+    @property
+    def pair(self) -> Optional[Tuple[str, str]]: ...
+    @property
+    def pair_kind(self) -> Optional[Literal["obstacle", "self"]]: ...
+    @property
+    def pair_indices(self) -> Optional[Tuple[int, int]]: ...
+    @property
+    def stats(self) -> dict[str, int]: ...
+
+class SegmentReport:
+    """`ChainScene.check_segment` and `check_path`'s answer: the first contact
+    (never later than the first touch), separated, or an iteration limit."""
+
+    @property
+    def outcome(self) -> Literal["contact", "separated", "iteration_limit"]: ...
+    @property
+    def hit(self) -> bool: ...
+    @property
+    def time(self) -> Optional[float]: ...
+    @property
+    def pair(self) -> Optional[Tuple[str, str]]: ...
+    @property
+    def pair_kind(self) -> Optional[Literal["obstacle", "self"]]: ...
+    @property
+    def pair_indices(self) -> Optional[Tuple[int, int]]: ...
+    @property
+    def distance(self) -> Optional[float]: ...
+    @property
+    def point_a(self) -> Optional[np.ndarray]: ...
+    @property
+    def point_b(self) -> Optional[np.ndarray]: ...
+    @property
+    def segment(self) -> Optional[int]: ...
+    @property
+    def stats(self) -> dict[str, int]: ...
+
+class ChainScene:
+    """A chain in still surroundings, for a planner's motion validator.
+    Obstacles: primitives, half-spaces and compounds of them (shape obstacles,
+    measured exactly), meshes, point clouds. `check_edge`, `edge_is_free` and
+    `edges_are_free` take every kind; `check_segment`, `check_path`,
+    `collides_at`, `clearance` and `allow_collisions_at` take mesh obstacles
+    only (`QueryError` otherwise). Every query releases the GIL; picklable
+    (the chain's URDF path, then what was added, replayed)."""
+
+    def __init__(
+        self,
+        chain: Chain,
+        contact_distance: float = 1e-3,
+        padding: float = 0.0,
+        edge_budget: int = 400000,
+        within_limits: bool = True,
+        max_iterations: int = 10000,
+    ) -> None: ...
+    @property
+    def chain(self) -> Chain: ...
+    def add_obstacle(self, body: Body, pose: Optional[PoseLike] = None, name: Optional[str] = None) -> int:
+        """A still body (capsules, cylinders and cones along their **y** axis);
+        returns its obstacle index. A convex_hull is refused (give it as a mesh)."""
+    def add_points(self, points: ArrayLike, radius: float, name: Optional[str] = None) -> int:
+        """A point cloud: a ball of `radius` about each row of the `(n, 3)` array."""
+    def __len__(self) -> int: ...
+    @property
+    def obstacle_names(self) -> list[str]: ...
+    def allow_collision(self, a: LinkLike, b: LinkLike) -> None: ...
+    def allow_collisions_at(self, q: ArrayLike, distance: float = 0.0) -> list[Tuple[str, str]]: ...
+    contact_distance: float
+    padding: float
+    edge_budget: int
+    within_limits: bool
+    max_iterations: int
+    @property
+    def params(self) -> dict[str, Any]: ...
+    def check_edge(self, q0: ArrayLike, q1: ArrayLike) -> EdgeReport: ...
+    def edge_is_free(self, q0: ArrayLike, q1: ArrayLike) -> bool: ...
+    def edges_are_free(
+        self,
+        edges: ArrayLike,
+        parallel: bool = True,
+        progress: Optional[Callable[[int, int], Any]] = None,
+    ) -> np.ndarray:
+        """`(n, 2, dof)` edges to a bool array of `n`, the same answers as one
+        `edge_is_free` each; on every core, the GIL released, in chunks of about
+        20 ms (Ctrl-C, `progress(done, total)`)."""
+    def check_segment(self, q0: ArrayLike, q1: ArrayLike) -> SegmentReport: ...
+    def check_path(self, path: ArrayLike) -> SegmentReport: ...
+    def collides_at(self, q: ArrayLike) -> bool: ...
+    def clearance(self, q: ArrayLike) -> Tuple[float, Optional[Tuple[str, str]]]: ...

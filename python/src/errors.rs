@@ -34,12 +34,21 @@ create_exception!(
      turning half-space, two half-spaces, a scene body on another interval."
 );
 
+create_exception!(
+    motion_bound,
+    UrdfError,
+    MotionBoundError,
+    "A URDF file that cannot be parsed or uses what is not read: a COLLADA mesh, a planar or \
+     floating joint, a mesh file that cannot be read."
+);
+
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
     m.add("MotionBoundError", py.get_type::<MotionBoundError>())?;
     m.add("InputError", py.get_type::<InputError>())?;
     m.add("MeshError", py.get_type::<MeshError>())?;
     m.add("QueryError", py.get_type::<QueryError>())?;
+    m.add("UrdfError", py.get_type::<UrdfError>())?;
     Ok(())
 }
 

@@ -14,6 +14,7 @@
 
 mod arrays;
 mod body;
+mod chain;
 mod errors;
 mod motion;
 mod query;
@@ -36,6 +37,9 @@ use pyo3::prelude::*;
 /// Motions: `Motion.between(start, end)`, `Motion(start, linear, angular)`,
 /// `MotionBatch` for many.
 /// Queries: `time_of_impact`, `time_of_impact_batch`, `Scene`.
+/// Robot arms: `Chain.from_urdf(path)`, `ChainScene(chain)` (`check_edge`,
+/// `edge_is_free`, `edges_are_free`, `check_segment`, `check_path`,
+/// `collides_at`).
 #[pymodule]
 fn motion_bound(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
@@ -44,6 +48,7 @@ fn motion_bound(m: &Bound<'_, PyModule>) -> PyResult<()> {
     motion::register(m)?;
     query::register(m)?;
     scene::register(m)?;
+    chain::register(m)?;
     testing::register(m)?;
     Ok(())
 }

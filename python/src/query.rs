@@ -464,7 +464,7 @@ const CHUNK_SECONDS: f64 = 0.02;
 /// The next chunk's length from the last one's: as many queries as fit in
 /// `CHUNK_SECONDS` at the last chunk's pace, at most four times the last
 /// length (the next queries may be slower), at least one query per thread.
-fn next_chunk(last: usize, seconds: f64, threads: usize) -> usize {
+pub(crate) fn next_chunk(last: usize, seconds: f64, threads: usize) -> usize {
     let per_query = seconds / last as f64;
     let fit = if per_query > 0.0 {
         (CHUNK_SECONDS / per_query).min(usize::MAX as f64) as usize
