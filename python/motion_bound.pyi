@@ -377,8 +377,8 @@ class ChainScene:
     """A chain in still surroundings, for a planner's motion validator.
     Obstacles: primitives, half-spaces and compounds of them (shape obstacles,
     measured exactly), meshes, point clouds. `check_edge`, `edge_is_free` and
-    `edges_are_free` take every kind; `check_segment`, `check_path`,
-    `collides_at`, `clearance` and `allow_collisions_at` take mesh obstacles
+    `edges_are_free` and `collides_at` take every kind; `check_segment`,
+    `check_path`, `clearance` and `allow_collisions_at` take mesh obstacles
     only (`QueryError` otherwise). Every query releases the GIL; picklable
     (the chain's URDF path, then what was added, replayed)."""
 

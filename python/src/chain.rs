@@ -1010,12 +1010,11 @@ impl ChainScene {
         Ok(self.segment_report(r.outcome, r.stats, Some(r.segment)))
     }
 
-    /// Whether some checked pair's surfaces meet at configuration `q` (mesh
-    /// obstacles only): the static check a sampling motion validator runs.
-    /// In a scene with shapes, `check_edge(q, q).outcome != "free"` is the
-    /// static check (within the contact distance).
+    /// Whether some checked pair's surfaces meet at configuration `q`
+    /// (computed distance at most the padding, 0 by default), against
+    /// meshes, shapes and point clouds: the static check a sampling motion
+    /// validator runs.
     fn collides_at(&self, py: Python<'_>, q: &Bound<'_, PyAny>) -> PyResult<bool> {
-        self.meshes_only("collides_at")?;
         let q = self.chain().coordinates(q, "q")?;
         let scene = &self.scene;
         py.detach(|| scene.collides_at(&q))
