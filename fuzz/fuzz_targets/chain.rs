@@ -29,6 +29,14 @@
 //!   report's contact is a checked pair at a time in `[0, 1]` within the
 //!   contact distance; the work counters add up; `clearance` is at most the
 //!   sampled truth's distance.
+//! * **The edge query** (`check_edge`, `edge_is_free`, `edges_are_free`, a
+//!   reused `EdgeChecker`; see [`edges`]): the same scene with up to three
+//!   fuzzed shape obstacles (primitives of zero, tiny and huge sizes,
+//!   half-spaces of any normal, point clouds), a padding and a work budget;
+//!   the same typed errors, one answer from every entry point, and never
+//!   free (nor free until a later time) where one of 2,001 samples finds a
+//!   checked pair touching or within the padding, the shapes measured as
+//!   triangles inscribed in them.
 //!
 //! An axis whose squared length is subnormal (components below about
 //! `1e-154`) was normalised off unit length (the `AXIS` failure, fixed in
@@ -44,10 +52,10 @@
 
 use libfuzzer_sys::fuzz_target;
 use motion_bound::chain::{
-    Chain, ChainBuilder, ChainError, ChainPair, ChainParams, ChainScene, JointKind, JointSpec,
-    Obstacle, SegmentOutcome,
+    Chain, ChainBuilder, ChainError, ChainPair, ChainParams, ChainScene, EdgeOutcome, JointKind,
+    JointSpec, Obstacle, SegmentOutcome, ShapeObstacle,
 };
-use motion_bound::{try_triangle_triangle, Float, Point3, Pose, TriMesh, Vec3};
+use motion_bound::{try_triangle_triangle, Convex, Float, InputError, Point3, Pose, TriMesh, Vec3};
 use motion_bound_fuzz::Bytes;
 
 /// Sampled intervals of the segment (2,001 samples).
@@ -448,6 +456,7 @@ type Placed = Vec<([V3; 3], (V3, V3))>;
 
 /// What the truth measures: the meshes' triangles and bounding spheres in
 /// their own frames, the obstacles' in the world, and the checked pairs.
+#[derive(Clone)]
 struct Truth {
     link_tris: Vec<Option<Bounded>>,
     obstacles: Vec<Bounded>,
@@ -528,6 +537,7 @@ impl Truth {
                     let (_, d, s) = self.link_tris[b].as_ref().expect("mesh");
                     (poses[a].point(*c), *r, poses[b].point(*d), *s)
                 }
+                _ => unreachable!("the truth measures shapes as obstacles"),
             };
             if norm(sub(cb, ca)) - ra - rb - CULL_MARGIN >= best.0 {
                 continue;
@@ -535,6 +545,7 @@ impl Truth {
             let (la, lb) = match pair {
                 ChainPair::Obstacle { link, .. } => (link, None),
                 ChainPair::SelfCollision { a, b } => (a, Some(b)),
+                _ => unreachable!("the truth measures shapes as obstacles"),
             };
             place(la, &mut placed);
             if let Some(lb) = lb {
@@ -1055,159 +1066,575 @@ fn run(data: &[u8]) {
         speed_queries.push((link, centre, radius, n, n_ok, interval, interval_ok, dirs));
     }
 
-    let (Ok(report), Ok(path), Ok(clearance)) = (report, path, clearance) else {
-        return;
-    };
-    assert_eq!(path.segment, 0, "one segment");
-    assert_eq!(
-        path.outcome, report.outcome,
-        "check_path and check_segment disagree"
-    );
-    let stats = report.stats;
-    assert_eq!(stats.pairs, all_pairs, "pairs counted: {stats:?}");
-    assert_eq!(
-        stats.pairs,
-        stats.excluded + stats.culled + stats.advanced,
-        "every pair excluded, culled or advanced: {stats:?}"
-    );
-    let cd = params.contact_distance;
-    let limit = match report.outcome {
-        SegmentOutcome::Contact(c) => {
-            assert!(
-                (0.0..=1.0).contains(&c.time),
-                "a contact time outside [0, 1]: {report:?}"
-            );
-            assert!(
-                c.distance <= cd,
-                "a contact farther than the contact distance: {report:?}"
-            );
-            assert!(
-                truth.pairs.contains(&c.pair),
-                "a contact of a pair not checked: {report:?}"
-            );
-            c.time
-        }
-        SegmentOutcome::IterationLimit { time, pair } => {
-            assert!(
-                (0.0..=1.0).contains(&time) && truth.pairs.contains(&pair),
-                "an iteration limit outside [0, 1] or of a pair not checked: {report:?}"
-            );
-            time
-        }
-        SegmentOutcome::Separated => f64::INFINITY,
-        other => panic!("an unknown outcome {other:?}"),
-    };
-
-    if !oracle {
-        return;
-    }
-
-    // (a) The speed bound against the exact velocity.
-    for (link, centre, radius, n, n_ok, interval, interval_ok, dirs) in speed_queries {
-        let bound = chain.directed_speed_bound(&q0, &q1, link, centre, radius, n, interval);
-        if !n_ok || !interval_ok {
-            assert!(
-                matches!(bound, Err(ChainError::InvalidParameter(_))),
-                "directed_speed_bound with n {n:?}, interval {interval:?}: {bound:?}"
-            );
-            continue;
-        }
-        let (directed, undirected) = bound.expect("a valid query");
-        assert!(
-            directed >= 0.0 && undirected >= 0.0,
-            "a negative or NaN bound ({directed}, {undirected})"
+    'segment: {
+        let (Ok(report), Ok(path), Ok(clearance)) = (report, path, clearance) else {
+            break 'segment;
+        };
+        assert_eq!(path.segment, 0, "one segment");
+        assert_eq!(
+            path.outcome, report.outcome,
+            "check_path and check_segment disagree"
         );
-        let nu = unit(n).expect("a nonzero n");
-        let path = model.path(link);
-        let mut points = vec![centre];
-        for k in 0..3 {
-            for s in [-1.0, 1.0] {
-                let mut p = centre;
-                p[k] += s * radius;
-                points.push(p);
-            }
-        }
-        for d in &dirs {
-            if let Some(u) = unit(*d) {
-                points.push(add(centre, scale(u, radius * norm(*d).min(1.0))));
-            }
-        }
-        for k in 0..=8 {
-            let s =
-                (interval[0] + (interval[1] - interval[0]) * f64::from(k) / 8.0).min(interval[1]);
-            let q = Model::at(&q0, &q1, s);
-            let (poses, frames) = model.fk(&q);
-            for &c in &points {
-                let p = poses[link].point(c);
-                let mut v = [0.0; 3];
-                let mut magnitude = 0.0;
-                for &j in &path {
-                    let jm = &model.joints[j];
-                    let Some(d) = jm.dof else { continue };
-                    let dq = q1[d] - q0[d];
-                    let (a, o) = frames[j];
-                    if jm.kind.is_rotational() {
-                        v = add(v, scale(cross(a, sub(p, o)), dq));
-                        magnitude += dq.abs() * (norm(p) + norm(o));
-                    } else {
-                        v = add(v, scale(a, dq));
-                        magnitude += dq.abs();
-                    }
-                }
-                let allowance = ORACLE_REL * magnitude;
-                let along = dot(v, nu).abs();
+        let stats = report.stats;
+        assert_eq!(stats.pairs, all_pairs, "pairs counted: {stats:?}");
+        assert_eq!(
+            stats.pairs,
+            stats.excluded + stats.culled + stats.advanced,
+            "every pair excluded, culled or advanced: {stats:?}"
+        );
+        let cd = params.contact_distance;
+        let limit = match report.outcome {
+            SegmentOutcome::Contact(c) => {
                 assert!(
+                    (0.0..=1.0).contains(&c.time),
+                    "a contact time outside [0, 1]: {report:?}"
+                );
+                assert!(
+                    c.distance <= cd,
+                    "a contact farther than the contact distance: {report:?}"
+                );
+                assert!(
+                    truth.pairs.contains(&c.pair),
+                    "a contact of a pair not checked: {report:?}"
+                );
+                c.time
+            }
+            SegmentOutcome::IterationLimit { time, pair } => {
+                assert!(
+                    (0.0..=1.0).contains(&time) && truth.pairs.contains(&pair),
+                    "an iteration limit outside [0, 1] or of a pair not checked: {report:?}"
+                );
+                time
+            }
+            SegmentOutcome::Separated => f64::INFINITY,
+            other => panic!("an unknown outcome {other:?}"),
+        };
+
+        if !oracle {
+            break 'segment;
+        }
+
+        // (a) The speed bound against the exact velocity.
+        for (link, centre, radius, n, n_ok, interval, interval_ok, dirs) in speed_queries {
+            let bound = chain.directed_speed_bound(&q0, &q1, link, centre, radius, n, interval);
+            if !n_ok || !interval_ok {
+                assert!(
+                    matches!(bound, Err(ChainError::InvalidParameter(_))),
+                    "directed_speed_bound with n {n:?}, interval {interval:?}: {bound:?}"
+                );
+                continue;
+            }
+            let (directed, undirected) = bound.expect("a valid query");
+            assert!(
+                directed >= 0.0 && undirected >= 0.0,
+                "a negative or NaN bound ({directed}, {undirected})"
+            );
+            let nu = unit(n).expect("a nonzero n");
+            let path = model.path(link);
+            let mut points = vec![centre];
+            for k in 0..3 {
+                for s in [-1.0, 1.0] {
+                    let mut p = centre;
+                    p[k] += s * radius;
+                    points.push(p);
+                }
+            }
+            for d in &dirs {
+                if let Some(u) = unit(*d) {
+                    points.push(add(centre, scale(u, radius * norm(*d).min(1.0))));
+                }
+            }
+            for k in 0..=8 {
+                let s = (interval[0] + (interval[1] - interval[0]) * f64::from(k) / 8.0)
+                    .min(interval[1]);
+                let q = Model::at(&q0, &q1, s);
+                let (poses, frames) = model.fk(&q);
+                for &c in &points {
+                    let p = poses[link].point(c);
+                    let mut v = [0.0; 3];
+                    let mut magnitude = 0.0;
+                    for &j in &path {
+                        let jm = &model.joints[j];
+                        let Some(d) = jm.dof else { continue };
+                        let dq = q1[d] - q0[d];
+                        let (a, o) = frames[j];
+                        if jm.kind.is_rotational() {
+                            v = add(v, scale(cross(a, sub(p, o)), dq));
+                            magnitude += dq.abs() * (norm(p) + norm(o));
+                        } else {
+                            v = add(v, scale(a, dq));
+                            magnitude += dq.abs();
+                        }
+                    }
+                    let allowance = ORACLE_REL * magnitude;
+                    let along = dot(v, nu).abs();
+                    assert!(
                     along - allowance <= directed,
                     "DIRECTED SPEED: |p'.n| = {along:e} > bound {directed:e} (allowance {allowance:e}) \
                      for link {link}, point {c:?} (radius {radius} about {centre:?}), n {n:?}, \
                      s = {s}, interval {interval:?}, q0 {q0:?}, q1 {q1:?}"
                 );
-                let speed = norm(v);
-                assert!(
+                    let speed = norm(v);
+                    assert!(
                     speed - allowance <= undirected,
                     "SPEED: |p'| = {speed:e} > bound {undirected:e} (allowance {allowance:e}) \
                      for link {link}, point {c:?}, s = {s}, interval {interval:?}, q0 {q0:?}, q1 {q1:?}"
+                );
+                }
+            }
+        }
+
+        // clearance: a lower bound of the distance at q0.
+        let (crate_clearance, crate_pair) = clearance;
+        let (exact, _) = truth.min_distance(&model, &q0, f64::INFINITY);
+        if truth.pairs.is_empty() {
+            assert!(
+                crate_clearance == f64::INFINITY && crate_pair.is_none(),
+                "clearance with nothing checked: {clearance:?}"
+            );
+        } else {
+            assert!(
+                crate_clearance <= exact + 1e-9,
+                "CLEARANCE {crate_clearance:e} above the distance {exact:e} at q0 {q0:?}"
+            );
+            assert!(
+                crate_pair.is_none_or(|p| truth.pairs.contains(&p)),
+                "clearance names a pair not checked: {clearance:?}"
+            );
+        }
+
+        // (b) Never late: the first touching sample before the reported time.
+        for i in 0..=SAMPLES {
+            let t = i as f64 / SAMPLES as f64;
+            if t >= limit {
+                break;
+            }
+            let q = Model::at(&q0, &q1, t);
+            let (d, pair) = truth.min_distance(&model, &q, f64::MIN_POSITIVE);
+            if d == 0.0 {
+                let what = match report.outcome {
+                    SegmentOutcome::Separated => "MISSED: Separated",
+                    SegmentOutcome::Contact(_) => "LATE: a contact",
+                    _ => "LATE: an iteration limit",
+                };
+                panic!(
+                    "{what}, but {pair:?} touches at t = {t} (sample {i}): {report:?}; \
+                 q0 {q0:?}, q1 {q1:?}, q(t) {q:?}"
                 );
             }
         }
     }
 
-    // clearance: a lower bound of the distance at q0.
-    let (crate_clearance, crate_pair) = clearance;
-    let (exact, _) = truth.min_distance(&model, &q0, f64::INFINITY);
-    if truth.pairs.is_empty() {
-        assert!(
-            crate_clearance == f64::INFINITY && crate_pair.is_none(),
-            "clearance with nothing checked: {clearance:?}"
-        );
+    // (c) The edge query, with shape obstacles.
+    edges(&mut b, &scene, &model, &truth, &q0, &q1, expected, oracle);
+}
+
+/// A surface of revolution about the body's `y` axis through the profile's
+/// points `(rho, y)` (first and last with `rho = 0`: the poles), `SIDES`
+/// points a ring, pulled towards the body origin by `1e-12` of themselves:
+/// every vertex on or inside a convex solid about the origin whose surface
+/// the profile follows, so every triangle is inside it.
+fn lathe(profile: &[(f64, f64)]) -> Vec<[V3; 3]> {
+    const SIDES: u32 = 8;
+    let shrink = 1.0 - 1e-12;
+    let ring = |(rho, y): (f64, f64)| -> Vec<V3> {
+        (0..SIDES)
+            .map(|k| {
+                let phi = f64::from(k) * std::f64::consts::TAU / f64::from(SIDES);
+                [
+                    rho * phi.cos() * shrink,
+                    y * shrink,
+                    rho * phi.sin() * shrink,
+                ]
+            })
+            .collect()
+    };
+    let rings: Vec<Vec<V3>> = profile.iter().map(|&p| ring(p)).collect();
+    let mut out = Vec::new();
+    let n = SIDES as usize;
+    for w in rings.windows(2) {
+        for k in 0..n {
+            let (a, b) = (w[0][k], w[0][(k + 1) % n]);
+            let (c, d) = (w[1][k], w[1][(k + 1) % n]);
+            out.push([a, b, d]);
+            out.push([a, d, c]);
+        }
+    }
+    out
+}
+
+/// The capsule of the segment `|y| <= h` and radius `r` (a ball for
+/// `h = 0`), inscribed.
+fn capsule_tris(h: f64, r: f64) -> Vec<[V3; 3]> {
+    let mut profile = vec![(0.0, -h - r)];
+    for i in 1..=3 {
+        let a = f64::from(i) / 3.0 * std::f64::consts::FRAC_PI_2;
+        profile.push((r * a.sin(), -h - r * a.cos()));
+    }
+    for i in (0..3).rev() {
+        let a = f64::from(i) / 3.0 * std::f64::consts::FRAC_PI_2;
+        profile.push((r * a.sin(), h + r * a.cos()));
+    }
+    lathe(&profile)
+}
+
+/// A small tetrahedron inside the ball of radius `r` about `p`.
+fn tetra_in_ball(p: V3, r: f64) -> Vec<[V3; 3]> {
+    let s = r * (1.0 - 1e-9) / 3f64.sqrt();
+    let c = [
+        [1.0, 1.0, 1.0],
+        [1.0, -1.0, -1.0],
+        [-1.0, 1.0, -1.0],
+        [-1.0, -1.0, 1.0],
+    ]
+    .map(|c: V3| add(p, scale(c, s)));
+    TETRA.iter().map(|t| t.map(|i| c[i as usize])).collect()
+}
+
+/// A rotation whose third column is the unit `m`.
+fn frame_with_z(m: V3) -> M3 {
+    let a = if m[0].abs() < 0.9 {
+        [1.0, 0.0, 0.0]
     } else {
+        [0.0, 1.0, 0.0]
+    };
+    let u = unit(cross(a, m)).expect("a unit normal has a perpendicular");
+    let w = cross(m, u);
+    [0, 1, 2].map(|i| [u[i], w[i], m[i]])
+}
+
+/// A radius or extent: zero, tiny, ordinary or huge.
+fn length(b: &mut Bytes<'_>) -> f64 {
+    match b.u8() % 8 {
+        0 => 0.0,
+        1 => 1e-12,
+        2 => 1e-6,
+        3 => 5.0,
+        _ => b.range(0.001, 0.4),
+    }
+}
+
+/// A fuzzed shape obstacle: the shape (or `None` when the input is refused,
+/// after checking the refusal is the documented error) and its inscribed
+/// triangles in the world (a touch of them is a touch of the shape).
+fn shape_obstacle(b: &mut Bytes<'_>) -> Option<(ShapeObstacle<f64>, Vec<[V3; 3]>)> {
+    let place = Place {
+        r: rotation(b),
+        x: vector(b, 1.5),
+    };
+    let bad_pose = b.u8().is_multiple_of(16);
+    let kind = b.u8() % 8;
+    let rounded = if b.u8().is_multiple_of(4) {
+        length(b)
+    } else {
+        0.0
+    };
+    let (shape, local): (Convex<'static, f64>, Vec<[V3; 3]>) = match kind {
+        0 | 1 => {
+            let h = [length(b), length(b), length(b)];
+            let m = box_mesh([0.0; 3], h);
+            (Convex::try_cuboid(h).expect("a cuboid"), triangles_of(&m))
+        }
+        2 => {
+            let r = length(b);
+            (Convex::try_ball(r).expect("a ball"), capsule_tris(0.0, r))
+        }
+        3 => {
+            let (h, r) = (length(b), length(b));
+            (
+                Convex::try_capsule(h, r).expect("a capsule"),
+                capsule_tris(h, r),
+            )
+        }
+        4 => {
+            let (h, r) = (length(b), length(b));
+            match Convex::try_cylinder(h, r) {
+                Ok(c) => (c, lathe(&[(0.0, -h), (r, -h), (r, h), (0.0, h)])),
+                Err(e) => {
+                    assert_eq!(e, InputError::ZeroHeight, "a cylinder of height {h}");
+                    return None;
+                }
+            }
+        }
+        5 => {
+            let (h, r) = (length(b), length(b));
+            match Convex::try_cone(h, r) {
+                Ok(c) => (c, lathe(&[(0.0, -h), (r, -h), (0.0, h)])),
+                Err(e) => {
+                    assert_eq!(e, InputError::ZeroHeight, "a cone of height {h}");
+                    return None;
+                }
+            }
+        }
+        6 => {
+            // A half-space: a box 40 wide and 4 deep just below its plane.
+            let (normal, class) = axis(b);
+            let point = vector(b, 1.0);
+            let made = ShapeObstacle::try_half_space("half", normal, point);
+            let m = match (class, unit(normal)) {
+                (AxisClass::Bad, _) | (_, None) => {
+                    assert!(
+                        matches!(made, Err(ChainError::Shape(_))),
+                        "a half-space of normal {normal:?}: {made:?}"
+                    );
+                    return None;
+                }
+                (_, Some(m)) => m,
+            };
+            let Ok(made) = made else {
+                assert!(
+                    class == AxisClass::Either,
+                    "a half-space of normal {normal:?}: {made:?}"
+                );
+                return None;
+            };
+            let depth = 2.0;
+            let at = Place {
+                r: frame_with_z(m),
+                x: sub(point, scale(m, depth + 1e-9)),
+            };
+            let tris = triangles_of(&box_mesh([0.0; 3], [20.0, 20.0, depth]))
+                .iter()
+                .map(|t| t.map(|v| at.point(v)))
+                .collect();
+            return Some((made, tris));
+        }
+        _ => {
+            // A cloud: one to eight points (repeats included), one radius.
+            let n = 1 + usize::from(b.u8() % 8);
+            let mut points: Vec<V3> = Vec::new();
+            for i in 0..n {
+                let p = if i > 0 && b.u8().is_multiple_of(4) {
+                    points[i - 1]
+                } else {
+                    vector(b, 1.0)
+                };
+                points.push(p);
+            }
+            let r = length(b);
+            let refused = match b.u8() % 16 {
+                0 => Some(ShapeObstacle::try_points("cloud", &points, -r - 1e-3)),
+                1 => Some(ShapeObstacle::try_points("cloud", &points, f64::NAN)),
+                2 => Some(ShapeObstacle::try_points("cloud", &[], r)),
+                3 => {
+                    let mut bad = points.clone();
+                    bad[0][1] = f64::INFINITY;
+                    Some(ShapeObstacle::try_points("cloud", &bad, r))
+                }
+                _ => None,
+            };
+            if let Some(refused) = refused {
+                assert!(
+                    matches!(refused, Err(ChainError::Shape(_))),
+                    "a bad cloud: {refused:?}"
+                );
+            }
+            let made = ShapeObstacle::try_points("cloud", &points, r).expect("a cloud");
+            assert_eq!(made.points().map(<[_]>::len), Some(n), "every point kept");
+            let tris = points.iter().flat_map(|p| tetra_in_ball(*p, r)).collect();
+            return Some((made, tris));
+        }
+    };
+    let shape = shape.try_rounded(rounded).expect("a rounding");
+    let tris = local.iter().map(|t| t.map(|v| place.point(v))).collect();
+    if bad_pose {
+        let bad = Pose::from_translation(Vec3::new(0.0, f64::NAN, 0.0));
         assert!(
-            crate_clearance <= exact + 1e-9,
-            "CLEARANCE {crate_clearance:e} above the distance {exact:e} at q0 {q0:?}"
-        );
-        assert!(
-            crate_pair.is_none_or(|p| truth.pairs.contains(&p)),
-            "clearance names a pair not checked: {clearance:?}"
+            matches!(
+                ShapeObstacle::try_new("bad", shape, bad),
+                Err(ChainError::InvalidParameter(_))
+            ),
+            "a NaN shape pose"
         );
     }
+    let made = ShapeObstacle::try_new("shape", shape, place.pose()).expect("a shape");
+    Some((made, tris))
+}
 
-    // (b) Never late: the first touching sample before the reported time.
+/// The edge query (`check_edge`, `edge_is_free`, `edges_are_free`,
+/// `EdgeChecker`) on the scene with up to three fuzzed shape obstacles
+/// (primitives with zero, tiny and huge sizes, rounded or not; half-spaces
+/// of any normal; point clouds), a padding and a work budget:
+///
+/// * the same typed error as `check_segment` for a bad `q0`, `q1`; bad
+///   shapes and parameters refused with the documented error; never a panic;
+/// * the outcome well formed (`0 <= free_until <= at <= 1`, a checked pair,
+///   at most the budget's tests and one more), and the same from every
+///   entry point and a reused checker;
+/// * **never free where a sample touches**: at 2,001 samples before the
+///   outcome's `free_until` (all of them for `Free`), no checked pair (the
+///   shapes as inscribed triangles) is at distance 0 or nearer than the
+///   padding (less `1e-9`); a contact of a mesh or self pair is within the
+///   contact distance plus the padding at its `at` (exact distance).
+#[allow(clippy::too_many_arguments)]
+fn edges(
+    b: &mut Bytes<'_>,
+    scene: &ChainScene<f64>,
+    model: &Model,
+    truth: &Truth,
+    q0: &[f64],
+    q1: &[f64],
+    expected: Option<ChainError>,
+    oracle: bool,
+) {
+    let mut scene = scene.clone();
+    let mut truth = truth.clone();
+    let meshes = scene.obstacles().len();
+    let with_mesh: Vec<usize> = (0..model.meshes.len())
+        .filter(|&l| model.meshes[l].is_some())
+        .collect();
+    let mut shape_links = Vec::new();
+    for _ in 0..b.u8() % 4 {
+        let Some((shape, tris)) = shape_obstacle(b) else {
+            continue;
+        };
+        let s = scene.add_shape(shape);
+        let (c, r) = if tris.is_empty() {
+            ([0.0; 3], 0.0)
+        } else {
+            sphere(&tris)
+        };
+        truth.obstacles.push((tris, c, r));
+        for &l in &with_mesh {
+            truth.pairs.push(ChainPair::Obstacle {
+                link: l,
+                obstacle: meshes + s,
+            });
+            shape_links.push(ChainPair::Shape { link: l, shape: s });
+        }
+    }
+    let mut params = scene.params();
+    params.padding = [0.0, 0.0, 1e-3, 0.05][usize::from(b.u8() % 4)];
+    params.edge_budget = [400_000, 1, 64, 5_000][usize::from(b.u8() % 4)];
+    if !oracle {
+        params.edge_budget = params.edge_budget.min(20_000);
+    }
+    for bad in [
+        params.with_padding(-1.0),
+        params.with_padding(f64::NAN),
+        params.with_edge_budget(0),
+    ] {
+        assert!(
+            matches!(scene.set_params(bad), Err(ChainError::InvalidParameter(_))),
+            "invalid edge parameters {bad:?}"
+        );
+    }
+    scene.set_params(params).expect("valid parameters");
+    if scene.shapes().is_empty() {
+        // Without shapes the segment query is the other engine's.
+    } else {
+        assert!(
+            matches!(
+                scene.check_segment(q0, q1),
+                Err(ChainError::InvalidParameter(_))
+            ),
+            "check_segment with shapes"
+        );
+    }
+    let report = scene.check_edge(q0, q1);
+    assert_eq!(
+        report.as_ref().err(),
+        expected.as_ref(),
+        "check_edge's error for {q0:?} -> {q1:?}"
+    );
+    let free = scene.edge_is_free(q0, q1);
+    assert_eq!(
+        free.as_ref().err(),
+        expected.as_ref(),
+        "edge_is_free's error"
+    );
+    let batch = scene.edges_are_free(&[(q0.to_vec(), q1.to_vec())]);
+    assert_eq!(
+        batch.as_ref().err(),
+        expected.as_ref(),
+        "edges_are_free's error"
+    );
+    let (Ok(report), Ok(free), Ok(batch)) = (report, free, batch) else {
+        return;
+    };
+    assert_eq!(batch, vec![free], "edges_are_free and edge_is_free");
+    assert_eq!(
+        free,
+        report.outcome.is_free(),
+        "edge_is_free and check_edge"
+    );
+    let mut checker = scene.edge_checker();
+    let again = checker.check(q0, q1).expect("accepted once");
+    let twice = checker.check(q0, q1).expect("accepted once");
+    assert_eq!(again.outcome, report.outcome, "a checker and check_edge");
+    assert_eq!(twice.outcome, report.outcome, "a reused checker");
+    assert!(
+        report.stats.tests <= params.edge_budget + 1,
+        "tests beyond the budget: {report:?}"
+    );
+    let checked = |p: &ChainPair| truth.pairs.contains(p) || shape_links.contains(p);
+    let (limit, contact) = match report.outcome {
+        EdgeOutcome::Free => (f64::INFINITY, None),
+        EdgeOutcome::Contact {
+            free_until,
+            at,
+            pair,
+        } => {
+            assert!(
+                (0.0..=1.0).contains(&free_until) && (free_until..=1.0).contains(&at),
+                "a malformed contact: {report:?}"
+            );
+            assert!(
+                checked(&pair),
+                "a contact of a pair not checked: {report:?}"
+            );
+            (free_until, Some((at, pair)))
+        }
+        EdgeOutcome::Undecided { free_until } => {
+            assert!(
+                (0.0..=1.0).contains(&free_until),
+                "a malformed undecided: {report:?}"
+            );
+            (free_until, None)
+        }
+        other => panic!("an unknown outcome {other:?}"),
+    };
+    if !oracle {
+        return;
+    }
+    let pad = params.padding;
+    if let Some((at, pair @ (ChainPair::Obstacle { .. } | ChainPair::SelfCollision { .. }))) =
+        contact
+    {
+        let one = Truth {
+            pairs: vec![pair],
+            ..truth.clone()
+        };
+        let (d, _) = one.min_distance(model, &Model::at(q0, q1, at), f64::INFINITY);
+        let touch = params.contact_distance + pad;
+        assert!(
+            d <= touch * (1.0 + 1e-9) + 1e-12,
+            "FAR: a contact of {pair:?} at {at} with the surfaces {d:e} apart: {report:?}; q0 {q0:?}, q1 {q1:?}"
+        );
+    }
+    // Free where no sample comes within the padding (or touches).
+    let cutoff = if pad > 0.0 {
+        pad - 1e-9
+    } else {
+        f64::MIN_POSITIVE
+    };
     for i in 0..=SAMPLES {
         let t = i as f64 / SAMPLES as f64;
         if t >= limit {
             break;
         }
-        let q = Model::at(&q0, &q1, t);
-        let (d, pair) = truth.min_distance(&model, &q, f64::MIN_POSITIVE);
-        if d == 0.0 {
-            let what = match report.outcome {
-                SegmentOutcome::Separated => "MISSED: Separated",
-                SegmentOutcome::Contact(_) => "LATE: a contact",
-                _ => "LATE: an iteration limit",
+        let q = Model::at(q0, q1, t);
+        let (d, pair) = truth.min_distance(model, &q, cutoff);
+        if d < cutoff {
+            let what = if limit.is_infinite() {
+                "EDGE MISSED: Free"
+            } else {
+                "EDGE LATE: free until a later time"
             };
             panic!(
-                "{what}, but {pair:?} touches at t = {t} (sample {i}): {report:?}; \
-                 q0 {q0:?}, q1 {q1:?}, q(t) {q:?}"
+                "{what}, but {pair:?} is {d:e} apart (padding {pad}) at t = {t} (sample {i}): {report:?}; \
+                 shapes {:?}; q0 {q0:?}, q1 {q1:?}",
+                scene.shapes()
             );
         }
     }

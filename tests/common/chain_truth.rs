@@ -6,7 +6,8 @@
 //! link is within the sum of the joint origins' lengths, the prismatic
 //! travel and the mesh's radius of every joint above it), not the tested one.
 //!
-//! Used by `tests/chain.rs` and `examples/arm.rs` (through `#[path]`).
+//! Used by `tests/chain.rs`, `tests/chain_edge.rs` and `examples/arm.rs`
+//! (through `#[path]`).
 
 #![allow(dead_code, unreachable_pub)]
 
