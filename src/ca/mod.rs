@@ -45,6 +45,7 @@ mod vertex_set_vertex_set;
 
 pub use ball_ball::BallPair;
 pub use convex_convex::ConvexPair;
+#[cfg(feature = "alloc")]
 pub(crate) use convex_convex::{certified_gap_to, PlacedCore};
 #[cfg(feature = "alloc")]
 pub use dispatch::AnyPair;

@@ -490,6 +490,7 @@ impl<'a, T: Float> Convex<'a, T> {
     /// direction: what is certified along it is the support's slab gap
     /// ([`certified_gap`](crate::ca::certified_gap)), so the point need not be
     /// exact.
+    #[cfg(feature = "alloc")]
     pub(crate) fn core_closest_point(&self, p: Vec3<T>) -> Option<Vec3<T>> {
         let (local, pose) = match self.placed {
             Some(pose) => (
