@@ -31,7 +31,7 @@ use std::time::Instant;
 use arm_scene::{bare_arm_scene, Arm};
 use chain_truth::Truth;
 use motion_bound::chain::{ChainParams, ChainScene, EdgeOutcome, Obstacle, ShapeObstacle};
-use motion_bound::{Convex, Pose, TriMesh, Vec3};
+use motion_bound::{bodies, Convex, Pose, TriMesh, Vec3};
 use motion_bound_devkit::{cpu_name, Args, Rng};
 use serde_json::Value;
 
@@ -76,28 +76,6 @@ struct Scene {
     meshes: Vec<Obstacle<f64>>,
 }
 
-/// The box of half extents `h` as 12 triangles (exact).
-fn box_mesh(h: [f64; 3]) -> Result<TriMesh<f64>, Error> {
-    let v: Vec<[f64; 3]> = (0..8)
-        .map(|i| [0, 1, 2].map(|k| if i >> k & 1 == 1 { h[k] } else { -h[k] }))
-        .collect();
-    let t = vec![
-        [0, 2, 1],
-        [1, 2, 3],
-        [4, 5, 6],
-        [5, 7, 6],
-        [0, 1, 4],
-        [1, 5, 4],
-        [2, 6, 3],
-        [3, 6, 7],
-        [0, 4, 2],
-        [2, 4, 6],
-        [1, 3, 5],
-        [3, 7, 5],
-    ];
-    Ok(TriMesh::try_new(v, t)?)
-}
-
 /// The prism with `n` sides inscribed in the cylinder of radius `r` and
 /// half length `h` along `y`.
 fn prism_mesh(r: f64, h: f64, n: u32) -> Result<TriMesh<f64>, Error> {
@@ -122,71 +100,6 @@ fn prism_mesh(r: f64, h: f64, n: u32) -> Result<TriMesh<f64>, Error> {
     Ok(TriMesh::try_new(v, t)?)
 }
 
-/// An icosphere of radius `r` (vertices on the sphere), subdivided twice.
-fn sphere_mesh(r: f64) -> Result<TriMesh<f64>, Error> {
-    let p = (1.0 + 5f64.sqrt()) / 2.0;
-    let mut v: Vec<[f64; 3]> = vec![
-        [-1.0, p, 0.0],
-        [1.0, p, 0.0],
-        [-1.0, -p, 0.0],
-        [1.0, -p, 0.0],
-        [0.0, -1.0, p],
-        [0.0, 1.0, p],
-        [0.0, -1.0, -p],
-        [0.0, 1.0, -p],
-        [p, 0.0, -1.0],
-        [p, 0.0, 1.0],
-        [-p, 0.0, -1.0],
-        [-p, 0.0, 1.0],
-    ];
-    let mut t: Vec<[u32; 3]> = vec![
-        [0, 11, 5],
-        [0, 5, 1],
-        [0, 1, 7],
-        [0, 7, 10],
-        [0, 10, 11],
-        [1, 5, 9],
-        [5, 11, 4],
-        [11, 10, 2],
-        [10, 7, 6],
-        [7, 1, 8],
-        [3, 9, 4],
-        [3, 4, 2],
-        [3, 2, 6],
-        [3, 6, 8],
-        [3, 8, 9],
-        [4, 9, 5],
-        [2, 4, 11],
-        [6, 2, 10],
-        [8, 6, 7],
-        [9, 8, 1],
-    ];
-    let unit = |a: [f64; 3]| {
-        let l = (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt();
-        [a[0] / l * r, a[1] / l * r, a[2] / l * r]
-    };
-    for x in &mut v {
-        *x = unit(*x);
-    }
-    for _ in 0..2 {
-        let mut next = Vec::new();
-        let mut mid = std::collections::HashMap::new();
-        let mut m = |a: u32, b: u32, v: &mut Vec<[f64; 3]>| -> u32 {
-            *mid.entry((a.min(b), a.max(b))).or_insert_with(|| {
-                let (x, y) = (v[a as usize], v[b as usize]);
-                v.push(unit([x[0] + y[0], x[1] + y[1], x[2] + y[2]]));
-                (v.len() - 1) as u32
-            })
-        };
-        for [a, b, c] in t {
-            let (ab, bc, ca) = (m(a, b, &mut v), m(b, c, &mut v), m(c, a, &mut v));
-            next.extend([[a, ab, ca], [b, bc, ab], [c, ca, bc], [ab, bc, ca]]);
-        }
-        t = next;
-    }
-    Ok(TriMesh::try_new(v, t)?)
-}
-
 fn load(name: &str) -> Result<Scene, Error> {
     let path = format!("{}/data/mbm/{name}.json", env!("CARGO_MANIFEST_DIR"));
     let json: Value = serde_json::from_str(&std::fs::read_to_string(&path)?)?;
@@ -207,7 +120,12 @@ fn load(name: &str) -> Result<Scene, Error> {
             .push(ShapeObstacle::try_new(&name, Convex::try_cuboid(h)?, pose)?);
         scene
             .meshes
-            .push(Obstacle::try_new(name, box_mesh(h)?, pose)?);
+            // The box as its 12 triangles, exactly (`2 h / 2` is `h`).
+            .push(Obstacle::try_new(
+                name,
+                bodies::cuboid(h.map(|x| 2.0 * x))?,
+                pose,
+            )?);
     }
     // The file's cylinders are along their local z; ours along y: turn y onto z.
     let y_to_z = [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]];
@@ -239,7 +157,7 @@ fn load(name: &str) -> Result<Scene, Error> {
             .push(ShapeObstacle::try_new(&name, Convex::try_ball(r)?, pose)?);
         scene
             .meshes
-            .push(Obstacle::try_new(name, sphere_mesh(r)?, pose)?);
+            .push(Obstacle::try_new(name, bodies::icosphere(r, 2)?, pose)?);
     }
     Ok(scene)
 }
