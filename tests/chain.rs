@@ -12,7 +12,7 @@ mod arm_scene;
 mod chain_truth;
 mod common;
 
-use arm_scene::{arm_scene, cuboid, Arm};
+use arm_scene::{arm_scene, cuboid, random_chain, Arm};
 use chain_truth::Truth;
 use motion_bound::chain::{
     Chain, ChainBuilder, ChainError, ChainPair, ChainParams, ChainScene, JointKind, JointSpec,
@@ -103,59 +103,7 @@ fn limits_of(chain: &Chain<f64>) -> Vec<[f64; 2]> {
 /// A random serial chain of `joints` joints of every kind with small box
 /// links, and a few boxes and thin poles around it.
 fn random_chain_scene(rng: &mut Rng, joints: usize) -> ChainScene<f64> {
-    let mut b = ChainBuilder::new();
-    let mut parent = b.add_link("base", None).expect("link");
-    for j in 0..joints {
-        let half = [
-            rng.range(0.02, 0.06),
-            rng.range(0.02, 0.06),
-            rng.range(0.08, 0.2),
-        ];
-        let (mesh, _) = cuboid([0.0; 3], half, 0.05).expect("box");
-        let mesh = mesh.translated([0.0, 0.0, half[2]]).expect("shift");
-        let child = b.add_link(format!("link{j}"), Some(mesh)).expect("link");
-        let kind = match j % 4 {
-            0 | 3 => JointKind::Revolute,
-            1 => JointKind::Continuous,
-            _ => {
-                if rng.unit() < 0.5 {
-                    JointKind::Prismatic
-                } else {
-                    JointKind::Fixed
-                }
-            }
-        };
-        let axis = [
-            rng.range(-1.0, 1.0),
-            rng.range(-1.0, 1.0),
-            rng.range(-1.0, 1.0),
-        ];
-        let turn = motion_bound::Rotation::try_from_axis_angle(
-            Vec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), 1.0),
-            rng.range(-0.5, 0.5),
-        )
-        .expect("rotation");
-        let limits = match kind {
-            JointKind::Prismatic => Some([0.0, 0.15]),
-            JointKind::Continuous => None,
-            _ => Some([-2.5, 2.5]),
-        };
-        b.add_joint(JointSpec {
-            name: format!("j{j}"),
-            kind,
-            parent,
-            child,
-            origin: Pose::new(
-                turn.matrix(),
-                Vec3::new(0.0, 0.0, if j == 0 { 0.05 } else { 0.25 }),
-            ),
-            axis,
-            limits,
-        })
-        .expect("joint");
-        parent = child;
-    }
-    let mut scene = ChainScene::new(b.build().expect("chain"));
+    let mut scene = ChainScene::new(random_chain(rng, joints, 0.05));
     for (i, (c, h)) in [
         ([0.45, 0.1, 0.3], [0.05, 0.2, 0.02]),
         ([-0.3, 0.35, 0.4], [0.005, 0.005, 0.5]),

@@ -5,7 +5,8 @@
 
 #![allow(dead_code, unreachable_pub)]
 
-use motion_bound::chain::{Chain, ChainScene, Obstacle};
+use motion_bound::chain::{Chain, ChainBuilder, ChainScene, JointKind, JointSpec, Obstacle};
+use motion_bound::testkit::toi::Rng;
 use motion_bound::{Pose, TriMesh, Vec3};
 
 /// An obstacle: its name, mesh and pose.
@@ -186,4 +187,63 @@ pub fn arm_scene(arm: Arm) -> Result<(ChainScene<f64>, Vec<LinkPair>), Error> {
     }
     let defaults = scene.allow_collisions_at(&ready, 0.0)?;
     Ok((scene, defaults))
+}
+
+/// A random serial chain of `joints` joints of every kind (revolute,
+/// continuous, prismatic, fixed; random axes and origins) with box links
+/// (faces in squares at most `cell` wide), as in `tests/chain.rs`.
+pub fn random_chain(rng: &mut Rng, joints: usize, cell: f64) -> Chain<f64> {
+    let mut b = ChainBuilder::new();
+    let mut parent = b.add_link("base", None).expect("link");
+    for j in 0..joints {
+        let half = [
+            rng.range(0.02, 0.06),
+            rng.range(0.02, 0.06),
+            rng.range(0.08, 0.2),
+        ];
+        let (mesh, _) = cuboid([0.0; 3], half, cell).expect("box");
+        let mesh = mesh.translated([0.0, 0.0, half[2]]).expect("shift");
+        let child = b.add_link(format!("link{j}"), Some(mesh)).expect("link");
+        let kind = match j % 4 {
+            0 | 3 => JointKind::Revolute,
+            1 => JointKind::Continuous,
+            _ => {
+                if rng.unit() < 0.5 {
+                    JointKind::Prismatic
+                } else {
+                    JointKind::Fixed
+                }
+            }
+        };
+        let axis = [
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+            rng.range(-1.0, 1.0),
+        ];
+        let turn = motion_bound::Rotation::try_from_axis_angle(
+            Vec3::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), 1.0),
+            rng.range(-0.5, 0.5),
+        )
+        .expect("rotation");
+        let limits = match kind {
+            JointKind::Prismatic => Some([0.0, 0.15]),
+            JointKind::Continuous => None,
+            _ => Some([-2.5, 2.5]),
+        };
+        b.add_joint(JointSpec {
+            name: format!("j{j}"),
+            kind,
+            parent,
+            child,
+            origin: Pose::new(
+                turn.matrix(),
+                Vec3::new(0.0, 0.0, if j == 0 { 0.05 } else { 0.25 }),
+            ),
+            axis,
+            limits,
+        })
+        .expect("joint");
+        parent = child;
+    }
+    b.build().expect("chain")
 }
