@@ -22,11 +22,10 @@ pub(crate) struct Hierarchy<T> {
 }
 
 impl<T: Float> Hierarchy<T> {
-    /// The hierarchy over `leaves` (at least one): each split takes the best
-    /// of three keys by the children's box surface (for whole triangles and
-    /// for pieces alike: with the first key alone, a board's pieces cost
-    /// 18% more node pairs against the bunny, `examples/coarse_fine.rs`).
-    pub(super) fn try_new(leaves: Vec<Leaf<T>>) -> Result<Self, InputError> {
+    /// The hierarchy over `leaves` (at least one). With `trials`, each split
+    /// takes the best of three keys by the children's box surface; without,
+    /// the first key (for the many small leaves of pieces: a faster build).
+    pub(super) fn try_new(leaves: Vec<Leaf<T>>, trials: bool) -> Result<Self, InputError> {
         let mut order: Vec<u32> = (0..leaves.len() as u32).collect();
         let mut h = Self {
             nodes: Vec::with_capacity(2 * leaves.len()),
@@ -34,7 +33,7 @@ impl<T: Float> Hierarchy<T> {
             depth: 0,
             reach: T::ZERO,
         };
-        h.depth = h.build(&leaves, &mut order, 1)?;
+        h.depth = h.build(&leaves, &mut order, 1, trials)?;
         h.leaves = leaves;
         h.reach = h.nodes.iter().fold(T::ZERO, |m, n| {
             m.max_nan(n.obb.reach_up())
@@ -49,6 +48,7 @@ impl<T: Float> Hierarchy<T> {
         leaves: &[Leaf<T>],
         order: &mut [u32],
         depth: usize,
+        trials: bool,
     ) -> Result<usize, InputError> {
         let index = self.nodes.len();
         let inflate = order
@@ -99,9 +99,9 @@ impl<T: Float> Hierarchy<T> {
             2
         };
         let long = obb.axes[0].map(T::to_f64);
-        // The keys are tried for four leaves or more; below, the first serves
-        // and the third's axis (two passes and an eigensolve) is not computed.
-        let trying = order.len() >= 4;
+        // The third key is only tried with `trials`: without, its axis (two
+        // passes and an eigensolve) is not computed.
+        let trying = trials && order.len() >= 4;
         let normals_axis = if trying {
             principal_axes(normal_scatter(leaves, order))[0]
         } else {
@@ -140,9 +140,9 @@ impl<T: Float> Hierarchy<T> {
         order.select_nth_unstable_by(mid, |x, y| by(keys[best.1], x, y));
         let (left, right) = order.split_at_mut(mid);
         let left_index = self.nodes.len() as u32;
-        let dl = self.build(leaves, left, depth + 1)?;
+        let dl = self.build(leaves, left, depth + 1, trials)?;
         let right_index = self.nodes.len() as u32;
-        let dr = self.build(leaves, right, depth + 1)?;
+        let dr = self.build(leaves, right, depth + 1, trials)?;
         self.nodes[index].left = left_index;
         self.nodes[index].right = right_index;
         Ok(dl.max(dr))

@@ -16,15 +16,11 @@ use crate::Float;
 /// whole triangles then serve), or if a piece's corners were out of range
 /// (never for a valid mesh: they lie in its triangles' hulls).
 ///
-/// One hierarchy over every piece and short triangle, split as the whole
-/// triangles' is (the best of three keys by the children's box surface),
-/// so that pieces of different triangles near one another (the two faces
-/// of a thin board) share nodes: `O(L log^2 L)` for `L` leaves, the
-/// length's search `O(N)` per length tried and `O(budget)` for the one that
-/// fits. The trials cost about 3 times the build of one key (the pieces of a
-/// 12-triangle board: 1.10 G instructions against 0.36 G) and save the
-/// queries about a seventh of their work (`examples/coarse_fine.rs`, the
-/// board against the bunny: 1,437 node pairs a query against 1,702).
+/// One hierarchy over every piece and short triangle, split at the median
+/// of one key (centroids along the widest axis), so that pieces of
+/// different triangles near one another (the two faces of a thin board)
+/// share nodes: `O(L log L)` for `L` leaves, the length's search `O(N)` per
+/// length tried and `O(budget)` for the one that fits.
 pub(super) fn build_pieces<T: Float>(
     whole: &Hierarchy<T>,
     (length, budget): (f64, usize),
@@ -62,5 +58,5 @@ pub(super) fn build_pieces<T: Float>(
             cut.push(*leaf);
         }
     }
-    Hierarchy::try_new(cut).ok()
+    Hierarchy::try_new(cut, false).ok()
 }
