@@ -31,7 +31,7 @@ use std::time::Instant;
 use arm_scene::{bare_arm_scene, Arm};
 use chain_truth::Truth;
 use motion_bound::chain::{ChainParams, ChainScene, EdgeOutcome, Obstacle, ShapeObstacle};
-use motion_bound::{bodies, Convex, Pose, TriMesh, Vec3};
+use motion_bound::{bodies, Convex, Pose, Vec3};
 use motion_bound_devkit::{cpu_name, Args, Rng};
 use serde_json::Value;
 
@@ -76,30 +76,6 @@ struct Scene {
     meshes: Vec<Obstacle<f64>>,
 }
 
-/// The prism with `n` sides inscribed in the cylinder of radius `r` and
-/// half length `h` along `y`.
-fn prism_mesh(r: f64, h: f64, n: u32) -> Result<TriMesh<f64>, Error> {
-    let mut v = Vec::new();
-    for i in 0..n {
-        let a = std::f64::consts::TAU * f64::from(i) / f64::from(n);
-        v.push([r * a.cos(), -h, r * a.sin()]);
-        v.push([r * a.cos(), h, r * a.sin()]);
-    }
-    v.push([0.0, -h, 0.0]);
-    v.push([0.0, h, 0.0]);
-    let (lo, hi) = (2 * n, 2 * n + 1);
-    let mut t = Vec::new();
-    for i in 0..n {
-        let j = (i + 1) % n;
-        let (a0, a1, b0, b1) = (2 * i, 2 * i + 1, 2 * j, 2 * j + 1);
-        t.push([a0, a1, b1]);
-        t.push([a0, b1, b0]);
-        t.push([lo, a0, b0]);
-        t.push([hi, b1, a1]);
-    }
-    Ok(TriMesh::try_new(v, t)?)
-}
-
 fn load(name: &str) -> Result<Scene, Error> {
     let path = format!("{}/data/mbm/{name}.json", env!("CARGO_MANIFEST_DIR"));
     let json: Value = serde_json::from_str(&std::fs::read_to_string(&path)?)?;
@@ -134,9 +110,13 @@ fn load(name: &str) -> Result<Scene, Error> {
             c["radius"].as_f64().ok_or("radius")?,
             c["half_length"].as_f64().ok_or("half_length")?,
         );
-        let pose = Pose {
-            rotation: mat_mul(&rotation(&c["rotation"])?, &y_to_z),
+        let file_pose = Pose {
+            rotation: rotation(&c["rotation"])?,
             translation: Vec3::from_array(vec3(&c["center"])?),
+        };
+        let pose = Pose {
+            rotation: mat_mul(&file_pose.rotation, &y_to_z),
+            ..file_pose
         };
         let name = c["name"].as_str().unwrap_or("cylinder").to_string();
         scene.shapes.push(ShapeObstacle::try_new(
@@ -146,7 +126,12 @@ fn load(name: &str) -> Result<Scene, Error> {
         )?);
         scene
             .meshes
-            .push(Obstacle::try_new(name, prism_mesh(r, h, 64)?, pose)?);
+            // The 64-sided prism inscribed, along the file's own z.
+            .push(Obstacle::try_new(
+                name,
+                bodies::prism(r, 2.0 * h, 64, 1)?,
+                file_pose,
+            )?);
     }
     for c in list("spheres") {
         let r = c["radius"].as_f64().ok_or("radius")?;

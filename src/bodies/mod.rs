@@ -1,5 +1,5 @@
 //! Test and benchmark bodies built in code: torus knots at the seed's sizes,
-//! tori, thin boards, boxes and icospheres.
+//! tori, thin boards, boxes, prisms and icospheres.
 //!
 //! Every generator returns a [`TriMesh`] that is closed (every edge shared by
 //! two triangles running along it in opposite directions), wound outward
@@ -29,7 +29,7 @@ mod torus;
 
 pub use error::SceneError;
 pub use knot::{torus_knot, TorusKnot, TorusKnotSize};
-pub use solids::{board, cuboid, icosphere, tessellated_board};
+pub use solids::{board, cuboid, icosphere, prism, tessellated_board};
 pub use torus::torus;
 
 use alloc::vec::Vec;
