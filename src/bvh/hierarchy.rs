@@ -21,11 +21,28 @@ pub(crate) struct Hierarchy<T> {
     pub(crate) reach: T,
 }
 
+/// How a hierarchy's nodes are split: each at the median of one of three keys
+/// (the centroid along the widest axis of the centroids, the centroid along
+/// the box's longest axis, the triangle normal along a third axis), the
+/// first key unless the three are tried.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Split {
+    /// The best of the three keys at every node, by the children's fitted
+    /// boxes' surface (whole triangles).
+    Best,
+    /// The best of the three in nodes of at most this many leaves, by the
+    /// surface of the children's boxes along the node's own axes (no fit);
+    /// the first key above. For pieces: the last levels are where a thin
+    /// board's two faces part, and this costs about a quarter more than one
+    /// key where fitting every trial cost three times as much
+    /// (`examples/coarse_fine.rs`, `docs/performance.md`).
+    BestBelow(usize),
+}
+
 impl<T: Float> Hierarchy<T> {
-    /// The hierarchy over `leaves` (at least one). With `trials`, each split
-    /// takes the best of three keys by the children's box surface; without,
-    /// the first key (for the many small leaves of pieces: a faster build).
-    pub(super) fn try_new(leaves: Vec<Leaf<T>>, trials: bool) -> Result<Self, InputError> {
+    /// The hierarchy over `leaves` (at least one), each split chosen as
+    /// `split` says.
+    pub(super) fn try_new(leaves: Vec<Leaf<T>>, split: Split) -> Result<Self, InputError> {
         let mut order: Vec<u32> = (0..leaves.len() as u32).collect();
         let mut h = Self {
             nodes: Vec::with_capacity(2 * leaves.len()),
@@ -33,7 +50,7 @@ impl<T: Float> Hierarchy<T> {
             depth: 0,
             reach: T::ZERO,
         };
-        h.depth = h.build(&leaves, &mut order, 1, trials)?;
+        h.depth = h.build(&leaves, &mut order, 1, split)?;
         h.leaves = leaves;
         h.reach = h.nodes.iter().fold(T::ZERO, |m, n| {
             m.max_nan(n.obb.reach_up())
@@ -48,7 +65,7 @@ impl<T: Float> Hierarchy<T> {
         leaves: &[Leaf<T>],
         order: &mut [u32],
         depth: usize,
-        trials: bool,
+        split: Split,
     ) -> Result<usize, InputError> {
         let index = self.nodes.len();
         let inflate = order
@@ -99,14 +116,20 @@ impl<T: Float> Hierarchy<T> {
             2
         };
         let long = obb.axes[0].map(T::to_f64);
-        // The third key is only tried with `trials`: without, its axis (two
-        // passes and an eigensolve) is not computed.
-        let trying = trials && order.len() >= 4;
-        let normals_axis = if trying {
-            principal_axes(normal_scatter(leaves, order))[0]
-        } else {
-            [0.0; 3]
+        // The keys are tried as `split` says; the third's axis is the
+        // normals' principal axis (two passes and an eigensolve) for whole
+        // triangles, the box's thinnest axis for pieces (a board's two faces
+        // apart).
+        let small = match split {
+            Split::Best => false,
+            Split::BestBelow(n) => order.len() <= n,
         };
+        let trying = order.len() >= 4 && (split == Split::Best || small);
+        let normals_axis = match split {
+            Split::Best if trying => principal_axes(normal_scatter(leaves, order))[0],
+            _ => obb.axes[2].map(T::to_f64),
+        };
+        let frame = obb.axes.map(|a| a.map(T::to_f64));
         let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
         let keys: [&dyn Fn(u32) -> f64; 3] =
             [&|l| centroid(l)[axis], &|l| dot(centroid(l), long), &|l| {
@@ -124,11 +147,28 @@ impl<T: Float> Hierarchy<T> {
             for (k, key) in keys.iter().enumerate() {
                 trial.select_nth_unstable_by(mid, |x, y| by(*key, x, y));
                 let (l, r) = trial.split_at(mid);
+                // The children's boxes' surface: fitted boxes for whole
+                // triangles, boxes along this node's axes for pieces.
                 let area = |set: &[u32]| {
-                    let b = OrientedBox::fit(
-                        set.iter().flat_map(|&t| leaves[t as usize].corners.iter()),
-                    );
-                    let h = b.half.map(T::to_f64);
+                    let h = if small {
+                        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+                        for &t in set {
+                            for c in &leaves[t as usize].corners {
+                                let c = c.map(T::to_f64);
+                                for k in 0..3 {
+                                    let x = dot(c, frame[k]);
+                                    lo[k] = lo[k].min(x);
+                                    hi[k] = hi[k].max(x);
+                                }
+                            }
+                        }
+                        [0, 1, 2].map(|k| hi[k] - lo[k])
+                    } else {
+                        let b = OrientedBox::fit(
+                            set.iter().flat_map(|&t| leaves[t as usize].corners.iter()),
+                        );
+                        b.half.map(T::to_f64)
+                    };
                     h[0] * h[1] + h[1] * h[2] + h[0] * h[2]
                 };
                 let cost = area(l) + area(r);
@@ -140,9 +180,9 @@ impl<T: Float> Hierarchy<T> {
         order.select_nth_unstable_by(mid, |x, y| by(keys[best.1], x, y));
         let (left, right) = order.split_at_mut(mid);
         let left_index = self.nodes.len() as u32;
-        let dl = self.build(leaves, left, depth + 1, trials)?;
+        let dl = self.build(leaves, left, depth + 1, split)?;
         let right_index = self.nodes.len() as u32;
-        let dr = self.build(leaves, right, depth + 1, trials)?;
+        let dr = self.build(leaves, right, depth + 1, split)?;
         self.nodes[index].left = left_index;
         self.nodes[index].right = right_index;
         Ok(dl.max(dr))

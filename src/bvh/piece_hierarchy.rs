@@ -5,7 +5,7 @@
 
 use alloc::vec::Vec;
 
-use super::hierarchy::Hierarchy;
+use super::hierarchy::{Hierarchy, Split};
 use super::pieces::{self, Cutter};
 use crate::Float;
 
@@ -16,11 +16,21 @@ use crate::Float;
 /// whole triangles then serve), or if a piece's corners were out of range
 /// (never for a valid mesh: they lie in its triangles' hulls).
 ///
-/// One hierarchy over every piece and short triangle, split at the median
-/// of one key (centroids along the widest axis), so that pieces of
+/// One hierarchy over every piece and short triangle, so that pieces of
 /// different triangles near one another (the two faces of a thin board)
-/// share nodes: `O(L log L)` for `L` leaves, the length's search `O(N)` per
-/// length tried and `O(budget)` for the one that fits.
+/// share nodes. Nodes of more than [`PIECE_TRIALS`] leaves are split at the
+/// median of one key (centroids along the widest axis); smaller ones by the
+/// best of three keys ([`Split::BestBelow`]), where a board's faces part:
+/// `O(L log L)` for `L` leaves, the length's search `O(N)` per length tried
+/// and `O(budget)` for the one that fits.
+/// The largest node of pieces whose split tries the three keys. With 64, a
+/// 12-triangle board's pieces against the bunny take 1,505 node pairs a
+/// query (p99 4,527) against 1,702 (5,891) with one key and 1,437 (4,370)
+/// with fitted trials everywhere, and the build costs 1.2 times one key's
+/// where those trials cost 2.7 (`examples/coarse_fine.rs`;
+/// `docs/performance.md`, 2026-12-04).
+const PIECE_TRIALS: usize = 64;
+
 pub(super) fn build_pieces<T: Float>(
     whole: &Hierarchy<T>,
     (length, budget): (f64, usize),
@@ -58,5 +68,5 @@ pub(super) fn build_pieces<T: Float>(
             cut.push(*leaf);
         }
     }
-    Hierarchy::try_new(cut, false).ok()
+    Hierarchy::try_new(cut, Split::BestBelow(PIECE_TRIALS)).ok()
 }
