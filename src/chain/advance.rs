@@ -210,8 +210,21 @@ fn advance<T: Float>(
         }
         let nodes = PlacedNodes::new(ta, tb, a, b, ia, ib);
         let g = nodes.ball_gap(a, b);
-        if g > T::ZERO {
-            let s = nodes.step(g, a, b, x);
+        let mut s = if g > T::ZERO {
+            nodes.step(g, a, b, x)
+        } else {
+            T::ZERO
+        };
+        if s < best {
+            // The boxes' gap along the larger's nearest face, stepped at
+            // the balls' speeds along that direction.
+            if let (g, Some(n)) = nodes.face_gap(a, b) {
+                let (mu_a, _) = a.ball_speed(nodes.ca, nodes.ra, n);
+                let (mu_b, _) = b.ball_speed(nodes.cb, nodes.rb, n);
+                s = s.max_nan(step_down(g, T::ZERO, mu_a, mu_b));
+            }
+        }
+        if s > T::ZERO {
             if s >= best {
                 continue;
             }

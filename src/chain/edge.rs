@@ -19,13 +19,13 @@
 
 use alloc::vec::Vec;
 
-use crate::bvh::{Hierarchy, OrientedBox, NO_CHILD};
+use crate::bvh::{Hierarchy, NO_CHILD};
 use crate::chain::bound::LinkMotion;
-use crate::chain::gap::{placed_corners, slab_gap};
+use crate::chain::gap::{box_support_up, from_box, placed_corners, slab_gap};
 use crate::chain::report::ChainPair;
 use crate::chain::segment::{take_motion, Segment, Work};
 use crate::chain::shapes::{node_points, triangle_points_gap, Against, Geometry, ShapeObstacle};
-use crate::geometry::closest::triangle_triangle_vec;
+use crate::geometry::closest::{point_triangle_vec, triangle_triangle_vec};
 use crate::rounding::{add_up, diff_up, gamma, gap_down, mul_up, sum_up};
 use crate::{Float, Vec3};
 
@@ -662,29 +662,57 @@ impl<T: Float> Edge<'_, T> {
         // thinnest axis of the larger box (a plate's normal): much tighter
         // than the balls for flat or long nodes.
         let line = cb - ca;
-        let box_gap = |d: Vec3<T>| match d.try_normalize() {
+        // The gap along `d` taken from `a` towards `b` (any computed
+        // direction is sound: Lemma 13.6 certifies the supports along it).
+        let along = |d: Vec3<T>| match d.try_normalize() {
             Some(n) => {
-                let n = if n.dot(line) < T::ZERO { -n } else { n };
                 let hi_a = box_support_up(&na.obb, ma, n);
                 let lo_b = -box_support_up(&nb.obb, mb, -n);
                 gap_down(lo_b - hi_a, ma.delta, mb.delta, ma.reach + mb.reach)
             }
             None => -T::INFINITY,
         };
-        let mut gap = gap.max_nan(box_gap(line));
-        if gap > need {
-            return Verdict::Clear;
-        }
-        let (thin, m) = if rb > ra {
-            (&nb.obb, mb)
+        let box_gap = |d: Vec3<T>| along(if d.dot(line) < T::ZERO { -d } else { d });
+        let (big, small_c, big_m, big_is_b) = if rb > ra {
+            (&nb.obb, ca, mb, true)
         } else {
-            (&na.obb, ma)
+            (&na.obb, cb, ma, false)
         };
-        gap = gap.max_nan(box_gap(
-            m.pose.transform_vector(Vec3::from_array(thin.axes[2])),
-        ));
-        if gap > need {
-            return Verdict::Clear;
+        // From the larger box's point nearest the smaller ball's centre to
+        // that centre: the nearest face of a long or wide node (the side of
+        // a pole one long triangle spans), where the centre line is tilted.
+        let nearest = || {
+            let d = from_box(big, big_m, small_c);
+            along(if big_is_b { -d } else { d })
+        };
+        // The thinnest axis of the larger box (a plate's normal).
+        let thin = || box_gap(big_m.pose.transform_vector(Vec3::from_array(big.axes[2])));
+        // For nodes of like size the centre line first; for a much larger
+        // one its nearest face first.
+        let lopsided = rb > ra * T::from_u32(4) || ra > rb * T::from_u32(4);
+        let mut gap = gap;
+        if lopsided {
+            gap = gap.max_nan(nearest());
+            if gap > need {
+                return Verdict::Clear;
+            }
+            gap = gap.max_nan(thin());
+            if gap > need {
+                return Verdict::Clear;
+            }
+        } else {
+            gap = gap.max_nan(box_gap(line));
+            if gap > need {
+                return Verdict::Clear;
+            }
+            gap = gap.max_nan(thin());
+            if gap > need {
+                return Verdict::Clear;
+            }
+            gap = gap.max_nan(nearest());
+            if gap > need {
+                return Verdict::Clear;
+            }
         }
         match (na.leaf(), nb.leaf()) {
             (Some(la), Some(lb)) => {
@@ -703,7 +731,20 @@ impl<T: Float> Edge<'_, T> {
                         n
                     }
                 };
-                for d in [line, facing(&pa, T::ONE), facing(&pb, -T::ONE)] {
+                // For a small triangle against a much larger one (a link's
+                // against a pole's long side), first the direction from the
+                // larger's point nearest the smaller's ball centre.
+                let first = lopsided.then(|| {
+                    if rb > ra {
+                        point_triangle_vec(ca, pb).on_b - ca
+                    } else {
+                        cb - point_triangle_vec(cb, pa).on_b
+                    }
+                });
+                for d in first
+                    .into_iter()
+                    .chain([line, facing(&pa, T::ONE), facing(&pb, -T::ONE)])
+                {
                     if slab_gap(&pa, &pb, d, ma, mb, T::ZERO) > need {
                         return Verdict::Clear;
                     }
@@ -748,20 +789,6 @@ impl<T: Float> Edge<'_, T> {
             Verdict::Keep
         }
     }
-}
-
-/// An upper bound of `x . n` over the exact placed box of a link (or
-/// obstacle) node, for the computed unit `n` (Lemma 13.6): the placed
-/// centre's `c . n` plus the box's support about its centre along
-/// `fl(R^T n)`, widened by the box's error weight times the rotation's error
-/// `epsilon_R` (Lemma 13.3) and the direction's rounding `8 u`; the placed
-/// centre's own error is `delta`, taken by the caller's `gap_down`.
-#[inline]
-fn box_support_up<T: Float>(obb: &OrientedBox<T>, m: &LinkMotion<T>, n: Vec3<T>) -> T {
-    let c = m.pose.transform_point(obb.centre);
-    let local = obb.support_raw(m.pose.inverse_transform_vector(n)) * (T::ONE + gamma::<T>(4));
-    let widen = obb.error_weight * (m.axis_err + T::from_u32(8) * T::UNIT_ROUNDOFF);
-    c.dot(n) + (local + widen) * (T::ONE + gamma::<T>(2))
 }
 
 /// The two children ordered `(nearer, farther)` by `far` (the nearer is

@@ -4,11 +4,11 @@
 
 use alloc::vec::Vec;
 
-use crate::bvh::{Hierarchy, Node};
+use crate::bvh::{Hierarchy, Node, OrientedBox};
 use crate::chain::bound::LinkMotion;
 use crate::chain::report::ChainStats;
 use crate::geometry::closest::triangle_triangle_vec;
-use crate::rounding::{gap_down, step_down};
+use crate::rounding::{gamma, gap_down, step_down};
 use crate::{Float, Pose, Vec3};
 
 /// The centre line of two balls as a computed unit vector, or `None`.
@@ -74,6 +74,31 @@ impl<'a, T: Float> PlacedNodes<'a, T> {
     #[inline]
     pub(super) fn ball_gap(&self, a: &LinkMotion<T>, b: &LinkMotion<T>) -> T {
         ball_gap(self.ca, self.ra, self.cb, self.rb, a, b)
+    }
+
+    /// The certified slab gap of the two nodes' boxes along the direction
+    /// from the larger box's point nearest the smaller ball's centre to that
+    /// centre (the nearest face of a long node, Lemma 13.6's item 2), and
+    /// that direction as a computed unit from A towards B; `-inf` (and the
+    /// centre line) when the centre is inside the box.
+    #[inline]
+    pub(super) fn face_gap(&self, a: &LinkMotion<T>, b: &LinkMotion<T>) -> (T, Option<Vec3<T>>) {
+        let d = if self.rb > self.ra {
+            -from_box(&self.nb.obb, b, self.ca)
+        } else {
+            from_box(&self.na.obb, a, self.cb)
+        };
+        match d.try_normalize() {
+            Some(n) => {
+                let hi_a = box_support_up(&self.na.obb, a, n);
+                let lo_b = -box_support_up(&self.nb.obb, b, -n);
+                (
+                    gap_down(lo_b - hi_a, a.delta, b.delta, a.reach + b.reach),
+                    Some(n),
+                )
+            }
+            None => (-T::INFINITY, None),
+        }
     }
 
     /// The certified step that closes the gap `g` along the balls' centre
@@ -183,7 +208,8 @@ pub(super) struct Near<T> {
 }
 
 /// The smallest certified gap over triangle pairs (branch and bound on the
-/// balls; node pairs at least `cap` apart are not refined).
+/// balls and the boxes' nearest faces; node pairs at least `cap` apart are
+/// not refined).
 #[allow(clippy::too_many_arguments)]
 pub(super) fn min_gap<T: Float>(
     ta: &Hierarchy<T>,
@@ -206,7 +232,13 @@ pub(super) fn min_gap<T: Float>(
     while let Some((ia, ib)) = stack.pop() {
         stats.node_pairs += 1;
         let nodes = PlacedNodes::new(ta, tb, a, b, ia, ib);
-        let g = nodes.ball_gap(a, b);
+        let mut g = nodes.ball_gap(a, b);
+        if g >= best {
+            continue;
+        }
+        // The boxes' gap along the larger's nearest face: a long triangle's
+        // node beside a link's (a pole's side, a plate's edge).
+        g = g.max_nan(nodes.face_gap(a, b).0);
         if g >= best {
             continue;
         }
@@ -251,4 +283,39 @@ pub(super) fn min_gap<T: Float>(
         gap: best.min_nan(kept),
         closest,
     }
+}
+
+/// An upper bound of `x . n` over the exact placed box of a link (or
+/// obstacle) node, for the computed unit `n` (Lemma 13.6): the placed
+/// centre's `c . n` plus the box's support about its centre along
+/// `fl(R^T n)`, widened by the box's error weight times the rotation's error
+/// `epsilon_R` (Lemma 13.3) and the direction's rounding `8 u`; the placed
+/// centre's own error is `delta`, taken by the caller's `gap_down`.
+#[inline]
+pub(super) fn box_support_up<T: Float>(obb: &OrientedBox<T>, m: &LinkMotion<T>, n: Vec3<T>) -> T {
+    let c = m.pose.transform_point(obb.centre);
+    let local = obb.support_raw(m.pose.inverse_transform_vector(n)) * (T::ONE + gamma::<T>(4));
+    let widen = obb.error_weight * (m.axis_err + T::from_u32(8) * T::UNIT_ROUNDOFF);
+    c.dot(n) + (local + widen) * (T::ONE + gamma::<T>(2))
+}
+
+/// The direction from the placed box's point nearest `c` to `c` (zero when
+/// `c` is inside), computed: only the choice of a slab's direction depends
+/// on it, never a gap's soundness.
+#[inline]
+pub(super) fn from_box<T: Float>(obb: &OrientedBox<T>, m: &LinkMotion<T>, c: Vec3<T>) -> Vec3<T> {
+    let local = m
+        .pose
+        .inverse_transform_vector(c - m.pose.transform_point(obb.centre));
+    let mut out = Vec3::new(T::ZERO, T::ZERO, T::ZERO);
+    for k in 0..3 {
+        let axis = Vec3::from_array(obb.axes[k]);
+        let (x, h) = (local.dot(axis), obb.half[k]);
+        if x > h {
+            out = out + axis * (x - h);
+        } else if x < -h {
+            out = out + axis * (x + h);
+        }
+    }
+    m.pose.transform_vector(out)
 }
