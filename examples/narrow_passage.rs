@@ -1,5 +1,7 @@
-//! The Panda's hand reaching into a narrow opening (issue 39's narrow
-//! passage, issue 43's coarse and fine surfaces): a cupboard of five plates
+//! Coarse and fine obstacles for the Panda (issue 39's narrow passage, issue
+//! 43's coarse and fine surfaces), in two scenes.
+//!
+//! **The opening** (`--scene opening`): the hand reaching into a cupboard of five plates
 //! built around the hand (and fingers) at a reaching pose, its opening 1.5 cm
 //! wider than the hand on each side, and 200 random segments from a
 //! pose 20 cm back along the hand's approach into it (both ends perturbed by
@@ -9,12 +11,26 @@
 //! against an independent ground truth on its own meshes (the shapes' truth
 //! on the coarse meshes: a box is exactly its 12 triangles).
 //!
+//! **The poles** (`--scene poles`): 20 upright poles of radius 2.5 cm and 1 m
+//! around the arm, each a 12-sided prism, coarse as a CAD or URDF file gives
+//! it (48 triangles, `bodies::prism` with one segment) and fine (rings every
+//! 4 cm: 624 triangles), and random planner edges of 0.05 to 0.3 rad between
+//! free configurations; each variant checked against the truth on its own
+//! meshes.
+//!
 //! ```text
-//! cargo run --release --example narrow_passage [-- --segments 200 --seed 3]
+//! cargo run --release --example narrow_passage [-- --segments 200 --seed 3 --scene opening|poles --first-contact N]
 //! ```
 //!
 //! One line per variant: `S: segments N, colliding C, missed M, late L, mean
-//! ms X, median ms Y, p99 ms Z, max ms W`.
+//! ms X, median ms Y, p99 ms Z, max ms W`, then the mean and 99th
+//! percentile of the pairs measured (`EdgeStats::tests`, a count that does
+//! not depend on the machine). With `--first-contact N`, the
+//! conservative advancement's first-contact query (`ChainScene::check_segment`)
+//! is also timed on the first `N` segments of the mesh variants (its contact
+//! time checked against the truth likewise), one line each. `--no-truth`
+//! skips the truth (for a run under callgrind: missed and late then read 0);
+//! `--variant V` runs only the variants whose name starts with `V`.
 
 #[path = "../tests/common/arm_scene.rs"]
 mod arm_scene;
@@ -25,8 +41,8 @@ use std::time::Instant;
 
 use arm_scene::{bare_arm_scene, cuboid, Arm};
 use chain_truth::Truth;
-use motion_bound::chain::{ChainScene, EdgeOutcome, Obstacle, ShapeObstacle};
-use motion_bound::{Convex, Pose, Vec3};
+use motion_bound::chain::{ChainScene, EdgeOutcome, Obstacle, SegmentOutcome, ShapeObstacle};
+use motion_bound::{bodies, Convex, Pose, Vec3};
 use motion_bound_devkit::{cpu_name, Args, Rng};
 
 type Error = Box<dyn std::error::Error>;
@@ -107,12 +123,8 @@ fn plates(lo: [f64; 3], hi: [f64; 3]) -> Vec<(&'static str, [f64; 3], [f64; 3])>
     ]
 }
 
-fn main() -> Result<(), Error> {
-    let mut args = Args::from_env("narrow_passage [--segments 200] [--seed 3]");
-    let segments: usize = args.value_or("--segments", 200);
-    let seed: u64 = args.value_or("--seed", 3);
-    args.finish();
-    let (arm, _) = bare_arm_scene(Arm::Panda)?;
+/// The opening's scenes (shapes, coarse and fine plates) and its segments.
+fn opening(arm: &ChainScene<f64>, segments: usize, seed: u64) -> Result<Scenes, Error> {
     let chain = arm.chain();
     let hand = chain.link_index("panda_hand")?;
     let fingers = [
@@ -157,7 +169,7 @@ fn main() -> Result<(), Error> {
     }
     let truth_coarse = Truth::new(&coarse);
     let truth_fine = Truth::new(&fine);
-    // Segments: both ends perturbed by up to 0.04 rad per joint, free.
+    // Segments: both ends perturbed by up to 0.025 rad per joint, free.
     let mut rng = Rng::new(seed);
     let mut list = Vec::new();
     while list.len() < segments {
@@ -178,52 +190,214 @@ fn main() -> Result<(), Error> {
             list.push((a, b));
         }
     }
-    println!(
-        "the Panda's hand into an opening 1.5 cm wider than the hand each side (five plates), {segments} segments; CPU: {}",
-        cpu_name()
+    Ok(Scenes {
+        title: format!("the Panda's hand into an opening 1.5 cm wider than the hand each side (five plates), {segments} segments"),
+        variants: vec![
+            ("shapes (cuboids)", shapes, Truth::new(&coarse), false),
+            ("coarse meshes (12 triangles a plate)", coarse, truth_coarse, true),
+            ("fine meshes (4 cm grid)", fine, truth_fine, true),
+        ],
+        list,
+    })
+}
+
+/// The poles' scenes (coarse and fine prisms) and their edges.
+fn poles(arm: &ChainScene<f64>, segments: usize, seed: u64) -> Result<Scenes, Error> {
+    let (radius, length, sides) = (0.025, 1.0, 12);
+    let mut rng = Rng::new(seed ^ 0x9e37_79b9_7f4a_7c15);
+    let mut coarse = arm.clone();
+    let mut fine = arm.clone();
+    let (thin, ringed) = (
+        bodies::prism(radius, length, sides, 1)?,
+        bodies::prism(radius, length, sides, (length / 0.04).round() as u32)?,
     );
-    let variants: [(&str, &ChainScene<f64>, &Truth); 3] = [
-        ("shapes (cuboids)", &shapes, &truth_coarse),
-        (
-            "coarse meshes (12 triangles a plate)",
-            &coarse,
-            &truth_coarse,
+    let mut placed: Vec<[f64; 2]> = Vec::new();
+    while placed.len() < 20 {
+        // Upright on the floor, 0.3 to 0.8 m from the base's axis, at
+        // least 10 cm apart.
+        let (r, a) = (rng.range(0.3, 0.8), rng.range(-3.1, 3.1));
+        let p = [r * a.cos(), r * a.sin()];
+        if placed
+            .iter()
+            .any(|q| (q[0] - p[0]).hypot(q[1] - p[1]) < 0.1)
+        {
+            continue;
+        }
+        placed.push(p);
+        let pose = Pose::from_translation(Vec3::new(p[0], p[1], length / 2.0));
+        let name = "pole";
+        coarse.add_obstacle(Obstacle::try_new(name, thin.clone(), pose)?);
+        fine.add_obstacle(Obstacle::try_new(name, ringed.clone(), pose)?);
+    }
+    let truth_coarse = Truth::new(&coarse);
+    let truth_fine = Truth::new(&fine);
+    let limits: Vec<[f64; 2]> = arm
+        .chain()
+        .limits()
+        .into_iter()
+        .map(|l| l.unwrap_or([-std::f64::consts::PI, std::f64::consts::PI]))
+        .collect();
+    let mut list = Vec::new();
+    while list.len() < segments {
+        let q0: Vec<f64> = limits
+            .iter()
+            .enumerate()
+            .map(|(i, &[lo, hi])| if i < 7 { rng.range(lo, hi) } else { 0.04 })
+            .collect();
+        let d: Vec<f64> = (0..7).map(|_| rng.range(-1.0, 1.0)).collect();
+        let n = d.iter().map(|x| x * x).sum::<f64>().sqrt();
+        if !(n > 0.1 && n <= 1.0) {
+            continue;
+        }
+        let len = rng.range(0.05, 0.3);
+        let mut q1 = q0.clone();
+        for (x, dx) in q1.iter_mut().zip(&d) {
+            *x += dx / n * len;
+        }
+        let inside = q1
+            .iter()
+            .zip(&limits)
+            .all(|(x, [lo, hi])| x >= lo && x <= hi);
+        if inside && !truth_coarse.touches_at(&q0) && !truth_coarse.touches_at(&q1) {
+            list.push((q0, q1));
+        }
+    }
+    Ok(Scenes {
+        title: format!(
+            "the Panda among 20 poles (12-sided prisms, radius {radius}, {length} m), {segments} planner edges of 0.05 to 0.3 rad between free configurations"
         ),
-        ("fine meshes (4 cm grid)", &fine, &truth_fine),
-    ];
-    for (name, scene, truth) in variants {
-        let mut checker = scene.edge_checker();
-        let mut times = Vec::new();
-        let (mut colliding, mut missed, mut late, mut undecided) = (0, 0, 0, 0);
-        for (q0, q1) in &list {
-            let start = Instant::now();
-            let report = checker.check(q0, q1)?;
-            times.push(start.elapsed().as_secs_f64() * 1e3);
-            let touch = truth.sample(q0, q1, 1e-4).touch;
-            match (touch, report.outcome) {
-                (Some(_), EdgeOutcome::Free) => missed += 1,
-                (Some((t, _, _)), EdgeOutcome::Contact { free_until, .. }) if free_until > t => {
-                    late += 1
+        variants: vec![
+            ("coarse prisms (48 triangles a pole)", coarse, truth_coarse, true),
+            ("fine prisms (rings every 4 cm, 624 triangles a pole)", fine, truth_fine, true),
+        ],
+        list,
+    })
+}
+
+/// A scene's variants (name, scene, its truth, whether it is all meshes)
+/// and the segments they share.
+struct Scenes {
+    title: String,
+    variants: Vec<(&'static str, ChainScene<f64>, Truth, bool)>,
+    list: Vec<(Vec<f64>, Vec<f64>)>,
+}
+
+/// Mean, median, 99th percentile and max of `times`, sorted in place.
+fn summary(times: &mut [f64]) -> String {
+    let n = times.len();
+    let mean = times.iter().sum::<f64>() / n as f64;
+    times.sort_by(f64::total_cmp);
+    format!(
+        "mean ms {mean:.3}, median ms {:.3}, p99 ms {:.3}, max ms {:.3}",
+        times[n / 2],
+        times[((n as f64 - 1.0) * 0.99) as usize],
+        times[n - 1]
+    )
+}
+
+fn main() -> Result<(), Error> {
+    let mut args = Args::from_env(
+        "narrow_passage [--segments 200] [--seed 3] [--scene opening|poles] [--first-contact N] [--no-truth] [--variant coarse|fine|shapes]",
+    );
+    let segments: usize = args.value_or("--segments", 200);
+    let seed: u64 = args.value_or("--seed", 3);
+    let only: String = args.value_or("--scene", String::new());
+    let first: usize = args.value_or("--first-contact", 0);
+    let truth = !args.flag("--no-truth");
+    let variant: String = args.value_or("--variant", String::new());
+    args.finish();
+    let (arm, _) = bare_arm_scene(Arm::Panda)?;
+    println!("CPU: {}", cpu_name());
+    let mut failed = false;
+    for (key, build) in [
+        (
+            "opening",
+            opening as fn(&ChainScene<f64>, usize, u64) -> Result<Scenes, Error>,
+        ),
+        ("poles", poles),
+    ] {
+        if !only.is_empty() && only != key {
+            continue;
+        }
+        let scenes = build(&arm, segments, seed)?;
+        println!("{}", scenes.title);
+        for (name, scene, sampled, meshes) in &scenes.variants {
+            if !name.starts_with(variant.as_str()) {
+                continue;
+            }
+            let mut checker = scene.edge_checker();
+            let mut times = Vec::new();
+            let (mut colliding, mut missed, mut late, mut undecided) = (0, 0, 0, 0);
+            let mut touches = Vec::new();
+            let mut tests = Vec::new();
+            let mut leaves = 0usize;
+            for (q0, q1) in &scenes.list {
+                let start = Instant::now();
+                let report = checker.check(q0, q1)?;
+                times.push(start.elapsed().as_secs_f64() * 1e3);
+                tests.push(report.stats.tests as f64);
+                leaves += report.stats.leaf_tests;
+                let touch = if truth {
+                    sampled.sample(q0, q1, 1e-4).touch.map(|(t, _, _)| t)
+                } else {
+                    None
+                };
+                match (touch, report.outcome) {
+                    (Some(_), EdgeOutcome::Free) => missed += 1,
+                    (Some(t), EdgeOutcome::Contact { free_until, .. }) if free_until > t => {
+                        late += 1
+                    }
+                    (_, EdgeOutcome::Undecided { .. }) => undecided += 1,
+                    _ => {}
                 }
-                (_, EdgeOutcome::Undecided { .. }) => undecided += 1,
-                _ => {}
+                if touch.is_some() {
+                    colliding += 1;
+                }
+                touches.push(touch);
             }
-            if touch.is_some() {
-                colliding += 1;
+            println!(
+                "{name}: segments {}, colliding {colliding}, missed {missed}, late {late}, undecided {undecided}, {}",
+                times.len(),
+                summary(&mut times)
+            );
+            let n = tests.len();
+            let mean = tests.iter().sum::<f64>() / n as f64;
+            tests.sort_by(f64::total_cmp);
+            println!(
+                "    pairs measured (`EdgeStats::tests`) mean {mean:.0}, median {:.0}, p99 {:.0}; exact leaf measurements mean {:.0}",
+                tests[n / 2],
+                tests[((n as f64 - 1.0) * 0.99) as usize],
+                leaves as f64 / n as f64
+            );
+            failed |= missed + late > 0;
+            if first == 0 || !*meshes {
+                continue;
             }
+            // The first-contact query on the first segments, its contact
+            // time against the same truth.
+            let mut times = Vec::new();
+            let (mut missed, mut late, mut undecided) = (0, 0, 0);
+            for ((q0, q1), touch) in scenes.list.iter().zip(&touches).take(first) {
+                let start = Instant::now();
+                let report = scene.check_segment(q0, q1)?;
+                times.push(start.elapsed().as_secs_f64() * 1e3);
+                match (touch, report.outcome) {
+                    (Some(_), SegmentOutcome::Separated) => missed += 1,
+                    (Some(t), SegmentOutcome::Contact(c)) if c.time > *t => late += 1,
+                    (_, SegmentOutcome::IterationLimit { .. }) => undecided += 1,
+                    _ => {}
+                }
+            }
+            println!(
+                "{name}, first contact (check_segment): segments {}, missed {missed}, late {late}, undecided {undecided}, {}",
+                times.len(),
+                summary(&mut times)
+            );
+            failed |= missed + late > 0;
         }
-        let n = times.len();
-        let mean = times.iter().sum::<f64>() / n as f64;
-        times.sort_by(f64::total_cmp);
-        println!(
-            "{name}: segments {n}, colliding {colliding}, missed {missed}, late {late}, undecided {undecided}, mean ms {mean:.3}, median ms {:.3}, p99 ms {:.3}, max ms {:.3}",
-            times[n / 2],
-            times[((n as f64 - 1.0) * 0.99) as usize],
-            times[n - 1]
-        );
-        if missed + late > 0 {
-            return Err(format!("{name}: missed or late").into());
-        }
+    }
+    if failed {
+        return Err("missed or late".into());
     }
     Ok(())
 }
