@@ -172,20 +172,12 @@ fn arm_file(arm: Arm) -> (&'static str, Vec<f64>) {
 /// The arm in the clutter, with the SRDF's disabled pairs (the Panda's) and
 /// the pairs touching at its ready pose disabled; and those last pairs.
 pub fn arm_scene(arm: Arm) -> Result<(ChainScene<f64>, Vec<LinkPair>), Error> {
-    let (path, ready) = arm_file(arm);
-    let chain = Chain::<f64>::from_urdf_file(format!("{}/{path}", env!("CARGO_MANIFEST_DIR")))?;
-    let mut scene = ChainScene::new(chain);
+    // The pairs allowed at the ready pose are link pairs: the same with or
+    // without the clutter.
+    let (mut scene, defaults) = bare_arm_scene(arm)?;
     for (name, mesh, pose) in clutter()? {
         scene.add_obstacle(Obstacle::try_new(name, mesh, pose)?);
     }
-    if arm == Arm::Panda {
-        for (a, b) in PANDA_SRDF_DISABLED {
-            let a = scene.chain().link_index(&format!("panda_{a}"))?;
-            let b = scene.chain().link_index(&format!("panda_{b}"))?;
-            scene.allow_collision(a, b);
-        }
-    }
-    let defaults = scene.allow_collisions_at(&ready, 0.0)?;
     Ok((scene, defaults))
 }
 
