@@ -274,6 +274,17 @@ impl<T: Float> BallTree<T> {
         Ok(tree)
     }
 
+    /// [`try_from_mesh`](Self::try_from_mesh) without the hierarchy of
+    /// pieces, for the chain's links and obstacles: its queries bound a long
+    /// triangle by its box's nearest face instead (`proofs/13-chains.md`,
+    /// Lemma 13.4), so the pieces would only cost their build.
+    pub(crate) fn try_whole_from_mesh(mesh: &crate::TriMesh<T>) -> Result<Self, InputError> {
+        let mut tree =
+            Self::try_with_piece_length(mesh.vertices(), mesh.triangles(), f64::INFINITY)?;
+        tree.solid = mesh.is_solid();
+        Ok(tree)
+    }
+
     /// Whether the mesh is solid: built by [`try_from_mesh`](Self::try_from_mesh)
     /// from a mesh declared solid ([`TriMesh::try_solid`](crate::TriMesh::try_solid));
     /// a tree built from vertices and triangles is hollow. A body that starts

@@ -323,7 +323,7 @@ impl<T: Float> ChainBuilder<T> {
             path.reverse();
             let tree = match &mesh {
                 Some(mesh) => Some(
-                    BallTree::try_from_mesh(mesh)
+                    BallTree::try_whole_from_mesh(mesh)
                         .map_err(|e| ChainError::Mesh(alloc::format!("link {name:?}: {e}")))?,
                 ),
                 None => None,

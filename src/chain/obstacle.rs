@@ -41,7 +41,7 @@ impl<T: Float> Obstacle<T> {
             return Err(ChainError::InvalidParameter("an obstacle's pose"));
         }
         let name = name.into();
-        let tree = BallTree::try_from_mesh(&mesh)
+        let tree = BallTree::try_whole_from_mesh(&mesh)
             .map_err(|e| ChainError::Mesh(alloc::format!("obstacle {name:?}: {e}")))?;
         let reach = (pose.translation.length() + tree.whole.reach) * (T::ONE + gamma::<T>(4));
         let delta = gamma::<T>(8) * reach + T::from_u32(4) * T::ETA_NORMAL;
@@ -67,7 +67,7 @@ impl<T: Float> Obstacle<T> {
         &self.mesh
     }
 
-    /// Its ball tree.
+    /// Its ball tree (whole triangles: the chain builds no pieces).
     #[must_use]
     pub fn tree(&self) -> &BallTree<T> {
         &self.tree
