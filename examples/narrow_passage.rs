@@ -39,7 +39,7 @@ mod chain_truth;
 
 use std::time::Instant;
 
-use arm_scene::{bare_arm_scene, cuboid, Arm};
+use arm_scene::{bare_arm_scene, cuboid, joint_limits, panda_edge, Arm};
 use chain_truth::Truth;
 use motion_bound::chain::{ChainScene, EdgeOutcome, Obstacle, SegmentOutcome, ShapeObstacle};
 use motion_bound::{bodies, Convex, Pose, Vec3};
@@ -231,34 +231,12 @@ fn poles(arm: &ChainScene<f64>, segments: usize, seed: u64) -> Result<Scenes, Er
     }
     let truth_coarse = Truth::new(&coarse);
     let truth_fine = Truth::new(&fine);
-    let limits: Vec<[f64; 2]> = arm
-        .chain()
-        .limits()
-        .into_iter()
-        .map(|l| l.unwrap_or([-std::f64::consts::PI, std::f64::consts::PI]))
-        .collect();
+    let limits = joint_limits(arm.chain());
+    let mut range = |lo: f64, hi: f64| rng.range(lo, hi);
     let mut list = Vec::new();
     while list.len() < segments {
-        let q0: Vec<f64> = limits
-            .iter()
-            .enumerate()
-            .map(|(i, &[lo, hi])| if i < 7 { rng.range(lo, hi) } else { 0.04 })
-            .collect();
-        let d: Vec<f64> = (0..7).map(|_| rng.range(-1.0, 1.0)).collect();
-        let n = d.iter().map(|x| x * x).sum::<f64>().sqrt();
-        if !(n > 0.1 && n <= 1.0) {
-            continue;
-        }
-        let len = rng.range(0.05, 0.3);
-        let mut q1 = q0.clone();
-        for (x, dx) in q1.iter_mut().zip(&d) {
-            *x += dx / n * len;
-        }
-        let inside = q1
-            .iter()
-            .zip(&limits)
-            .all(|(x, [lo, hi])| x >= lo && x <= hi);
-        if inside && !truth_coarse.touches_at(&q0) && !truth_coarse.touches_at(&q1) {
+        let (q0, q1) = panda_edge(&mut range, &limits);
+        if !truth_coarse.touches_at(&q0) && !truth_coarse.touches_at(&q1) {
             list.push((q0, q1));
         }
     }
@@ -282,17 +260,23 @@ struct Scenes {
     list: Vec<(Vec<f64>, Vec<f64>)>,
 }
 
-/// Mean, median, 99th percentile and max of `times`, sorted in place.
+/// Mean, median, 99th percentile and max of `values` (sorted in place).
+fn stats(values: &mut [f64]) -> [f64; 4] {
+    let n = values.len();
+    let mean = values.iter().sum::<f64>() / n as f64;
+    values.sort_by(f64::total_cmp);
+    [
+        mean,
+        values[n / 2],
+        values[((n as f64 - 1.0) * 0.99) as usize],
+        values[n - 1],
+    ]
+}
+
+/// [`stats`] of times in ms, as printed.
 fn summary(times: &mut [f64]) -> String {
-    let n = times.len();
-    let mean = times.iter().sum::<f64>() / n as f64;
-    times.sort_by(f64::total_cmp);
-    format!(
-        "mean ms {mean:.3}, median ms {:.3}, p99 ms {:.3}, max ms {:.3}",
-        times[n / 2],
-        times[((n as f64 - 1.0) * 0.99) as usize],
-        times[n - 1]
-    )
+    let [mean, median, p99, max] = stats(times);
+    format!("mean ms {mean:.3}, median ms {median:.3}, p99 ms {p99:.3}, max ms {max:.3}")
 }
 
 fn main() -> Result<(), Error> {
@@ -360,14 +344,10 @@ fn main() -> Result<(), Error> {
                 times.len(),
                 summary(&mut times)
             );
-            let n = tests.len();
-            let mean = tests.iter().sum::<f64>() / n as f64;
-            tests.sort_by(f64::total_cmp);
+            let [mean, median, p99, _] = stats(&mut tests);
             println!(
-                "    pairs measured (`EdgeStats::tests`) mean {mean:.0}, median {:.0}, p99 {:.0}; exact leaf measurements mean {:.0}",
-                tests[n / 2],
-                tests[((n as f64 - 1.0) * 0.99) as usize],
-                leaves as f64 / n as f64
+                "    pairs measured (`EdgeStats::tests`) mean {mean:.0}, median {median:.0}, p99 {p99:.0}; exact leaf measurements mean {:.0}",
+                leaves as f64 / tests.len() as f64
             );
             failed |= missed + late > 0;
             if first == 0 || !*meshes {

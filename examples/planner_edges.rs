@@ -28,7 +28,7 @@ mod chain_truth;
 use std::fmt::Write as _;
 use std::time::Instant;
 
-use arm_scene::{bare_arm_scene, Arm};
+use arm_scene::{bare_arm_scene, joint_limits, panda_edge, Arm};
 use chain_truth::Truth;
 use motion_bound::chain::{ChainParams, ChainScene, EdgeOutcome, Obstacle, ShapeObstacle};
 use motion_bound::{bodies, Convex, Pose, Vec3};
@@ -37,8 +37,6 @@ use serde_json::Value;
 
 type Error = Box<dyn std::error::Error>;
 
-/// The Panda's finger opening (both fingers; VAMP's model holds them fixed).
-const FINGERS: f64 = 0.04;
 const SCENES: [&str; 3] = ["table_pick", "bookshelf_small", "cage"];
 
 fn numbers(v: &Value) -> Result<Vec<f64>, Error> {
@@ -147,32 +145,6 @@ fn load(name: &str) -> Result<Scene, Error> {
     Ok(scene)
 }
 
-/// A random edge of length 0.05 to 0.3 rad within the limits (the arm's
-/// seven joints; the fingers held open).
-fn edge(rng: &mut Rng, limits: &[[f64; 2]]) -> (Vec<f64>, Vec<f64>) {
-    loop {
-        let q0: Vec<f64> = limits[..7]
-            .iter()
-            .map(|&[lo, hi]| rng.range(lo, hi))
-            .collect();
-        let d: Vec<f64> = (0..7).map(|_| rng.range(-1.0, 1.0)).collect();
-        let n = d.iter().map(|x| x * x).sum::<f64>().sqrt();
-        if !(n > 0.1 && n <= 1.0) {
-            continue;
-        }
-        let len = rng.range(0.05, 0.3);
-        let q1: Vec<f64> = q0.iter().zip(&d).map(|(a, x)| a + x / n * len).collect();
-        if q1
-            .iter()
-            .zip(limits)
-            .all(|(x, [lo, hi])| x >= lo && x <= hi)
-        {
-            let full = |q: Vec<f64>| q.into_iter().chain([FINGERS, FINGERS]).collect();
-            return (full(q0), full(q1));
-        }
-    }
-}
-
 fn main() -> Result<(), Error> {
     let mut args = Args::from_env(
         "planner_edges [--edges 10000] [--truth 500] [--seed 1] [--scene S] [--write-edges DIR] [--vamp DIR] [--first-contact]",
@@ -186,12 +158,7 @@ fn main() -> Result<(), Error> {
     let vamp: String = args.value_or("--vamp", String::new());
     args.finish();
     let (arm, _) = bare_arm_scene(Arm::Panda)?;
-    let limits: Vec<[f64; 2]> = arm
-        .chain()
-        .limits()
-        .into_iter()
-        .map(|l| l.unwrap_or([-std::f64::consts::PI, std::f64::consts::PI]))
-        .collect();
+    let limits = joint_limits(arm.chain());
     println!(
         "the Panda ({} links, its collision meshes), random edges of 0.05 to 0.3 rad, one core; CPU: {}",
         arm.chain().link_count(),
@@ -236,7 +203,10 @@ fn main() -> Result<(), Error> {
         }
         let truth = Truth::new(&meshed);
         let mut rng = Rng::new(seed);
-        let list: Vec<(Vec<f64>, Vec<f64>)> = (0..edges).map(|_| edge(&mut rng, &limits)).collect();
+        let mut range = |lo: f64, hi: f64| rng.range(lo, hi);
+        let list: Vec<(Vec<f64>, Vec<f64>)> = (0..edges)
+            .map(|_| panda_edge(&mut range, &limits))
+            .collect();
         if !write.is_empty() {
             let mut out = String::new();
             for (a, b) in &list {

@@ -181,6 +181,51 @@ pub fn arm_scene(arm: Arm) -> Result<(ChainScene<f64>, Vec<LinkPair>), Error> {
     Ok((scene, defaults))
 }
 
+/// The Panda's finger opening on a planner's edges (both fingers; VAMP's
+/// model holds them fixed).
+pub const PANDA_FINGERS: f64 = 0.04;
+
+/// Each joint's limits, `[-pi, pi]` for a joint without.
+pub fn joint_limits(chain: &Chain<f64>) -> Vec<[f64; 2]> {
+    chain
+        .limits()
+        .into_iter()
+        .map(|l| l.unwrap_or([-std::f64::consts::PI, std::f64::consts::PI]))
+        .collect()
+}
+
+/// A random planner's edge for the Panda: the seven arm joints uniform
+/// within `limits`, moved 0.05 to 0.3 rad along a random direction (drawn
+/// again until the far end is within the limits), the fingers held open.
+/// `range(lo, hi)` draws uniformly from `[lo, hi)`.
+pub fn panda_edge(
+    range: &mut impl FnMut(f64, f64) -> f64,
+    limits: &[[f64; 2]],
+) -> (Vec<f64>, Vec<f64>) {
+    loop {
+        let q0: Vec<f64> = limits[..7].iter().map(|&[lo, hi]| range(lo, hi)).collect();
+        let d: Vec<f64> = (0..7).map(|_| range(-1.0, 1.0)).collect();
+        let n = d.iter().map(|x| x * x).sum::<f64>().sqrt();
+        if !(n > 0.1 && n <= 1.0) {
+            continue;
+        }
+        let len = range(0.05, 0.3);
+        let q1: Vec<f64> = q0.iter().zip(&d).map(|(a, x)| a + x / n * len).collect();
+        if q1
+            .iter()
+            .zip(limits)
+            .all(|(x, [lo, hi])| x >= lo && x <= hi)
+        {
+            let full = |q: Vec<f64>| {
+                q.into_iter()
+                    .chain([PANDA_FINGERS, PANDA_FINGERS])
+                    .collect()
+            };
+            return (full(q0), full(q1));
+        }
+    }
+}
+
 /// A random serial chain of `joints` joints of every kind (revolute,
 /// continuous, prismatic, fixed; random axes and origins) with box links
 /// (faces in squares at most `cell` wide), as in `tests/chain.rs`.
