@@ -45,7 +45,7 @@ use criterion::{Criterion, SamplingMode};
 use motion_bound::ca::{time_of_impact, CaParams, MeshPair};
 use motion_bound::chain::{Chain, ChainBuilder, ChainScene, ChainStats, Obstacle, SegmentOutcome};
 use motion_bound::testkit::toi::Rng;
-use motion_bound::{BodyPoint, Isometry, Pose, RigidMotion, Rotation, TriMesh, Vec3};
+use motion_bound::{bodies, BodyPoint, Isometry, Pose, RigidMotion, Rotation, TriMesh, Vec3};
 
 /// The Panda's ready pose (seven arm joints, two fingers).
 const READY: [f64; 9] = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785, 0.02, 0.02];
@@ -56,27 +56,10 @@ const SEGMENTS: usize = 50;
 /// Discrete resolutions, as fractions of the joint-space extent.
 const RESOLUTIONS: [f64; 2] = [0.005, 0.05];
 
-/// A box of half extents `half` about its origin: 8 corners, 12 triangles.
+/// A box of half extents `half` about its origin: 8 corners, 12 triangles
+/// (`bodies::cuboid`: `2 h / 2` is `h`).
 fn box_mesh(half: [f64; 3]) -> TriMesh<f64> {
-    let vertices = (0..8)
-        .map(|i| [0, 1, 2].map(|k| if i >> k & 1 == 1 { half[k] } else { -half[k] }))
-        .collect();
-    // Corners by bits (x = 1, y = 2, z = 4); two outward triangles a face.
-    let triangles = vec![
-        [0, 2, 3],
-        [0, 3, 1],
-        [4, 5, 7],
-        [4, 7, 6],
-        [0, 1, 5],
-        [0, 5, 4],
-        [2, 6, 7],
-        [2, 7, 3],
-        [0, 4, 6],
-        [0, 6, 2],
-        [1, 3, 7],
-        [1, 7, 5],
-    ];
-    TriMesh::try_new(vertices, triangles).expect("a box")
+    bodies::cuboid(half.map(|x| 2.0 * x)).expect("a box")
 }
 
 fn box_obstacle(name: &str, centre: [f64; 3], half: [f64; 3]) -> Obstacle<f64> {

@@ -12,7 +12,7 @@ mod arm_scene;
 mod chain_truth;
 mod common;
 
-use arm_scene::{arm_scene, cuboid, random_chain, Arm};
+use arm_scene::{arm_scene, chain_in_f32, cuboid, random_chain, to32, to64, Arm};
 use chain_truth::Truth;
 use motion_bound::chain::{
     Chain, ChainBuilder, ChainError, ChainPair, ChainParams, ChainScene, JointKind, JointSpec,
@@ -161,68 +161,16 @@ fn segments_against_sampled_truth_are_never_late_or_missed() {
 #[test]
 fn f32_chain_contacts_are_never_later_than_the_f64_truth() {
     let (panda, _) = arm_scene(Arm::Panda).expect("the Panda scene");
-    let to32 = |p: &Pose<f64>| {
-        Pose::new(
-            p.rotation.map(|r| r.map(|x| x as f32)),
-            Vec3::from_array(p.translation.to_array().map(|x| x as f32)),
-        )
-    };
     let chain = panda.chain();
-    let mut b = ChainBuilder::<f32>::new();
-    for l in 0..chain.link_count() {
-        let mesh = chain
-            .link_mesh(l)
-            .map(|m| m.try_convert::<f32>().expect("f32 mesh"));
-        b.add_link(chain.link_name(l).expect("name"), mesh)
-            .expect("link");
-    }
-    for j in chain.joints() {
-        b.add_joint(JointSpec {
-            name: j.name.clone(),
-            kind: j.kind,
-            parent: j.parent,
-            child: j.child,
-            origin: to32(&j.origin),
-            axis: j.axis.map(|x| x as f32),
-            limits: j.limits.map(|l| l.map(|x| x as f32)),
-        })
-        .expect("joint");
-    }
-    let mut s32 = ChainScene::new(b.build().expect("f32 chain"));
     // The f64 truth of exactly the f32 scene: convert back (exact).
-    let mut b64 = ChainBuilder::<f64>::new();
-    for l in 0..chain.link_count() {
-        let mesh = s32
-            .chain()
-            .link_mesh(l)
-            .map(|m| m.try_convert::<f64>().expect("f64 mesh"));
-        b64.add_link(chain.link_name(l).expect("name"), mesh)
-            .expect("link");
-    }
-    for j in s32.chain().joints() {
-        b64.add_joint(JointSpec {
-            name: j.name.clone(),
-            kind: j.kind,
-            parent: j.parent,
-            child: j.child,
-            origin: Pose::new(
-                j.origin.rotation.map(|r| r.map(f64::from)),
-                Vec3::from_array(j.origin.translation.to_array().map(f64::from)),
-            ),
-            axis: j.axis.map(f64::from),
-            limits: j.limits.map(|l| l.map(f64::from)),
-        })
-        .expect("joint");
-    }
-    let mut s64 = ChainScene::new(b64.build().expect("f64 chain"));
+    let (c32, c64) = chain_in_f32(chain);
+    let mut s32 = ChainScene::new(c32);
+    let mut s64 = ChainScene::new(c64);
     for o in panda.obstacles() {
         let m32 = o.mesh().try_convert::<f32>().expect("f32 obstacle");
         let p32 = to32(&o.pose());
         let m64 = m32.try_convert::<f64>().expect("back");
-        let p64 = Pose::new(
-            p32.rotation.map(|r| r.map(f64::from)),
-            Vec3::from_array(p32.translation.to_array().map(f64::from)),
-        );
+        let p64 = to64(&p32);
         s32.add_obstacle(Obstacle::try_new(o.name(), m32, p32).expect("obstacle"));
         s64.add_obstacle(Obstacle::try_new(o.name(), m64, p64).expect("obstacle"));
     }

@@ -28,14 +28,14 @@ mod arm_scene;
 #[path = "common/chain_truth.rs"]
 mod chain_truth;
 
-use arm_scene::{bare_arm_scene, cuboid, random_chain, Arm};
+use arm_scene::{bare_arm_scene, chain_in_f32, cuboid, random_chain, to32, to64, Arm};
 use chain_truth::Truth;
 use motion_bound::chain::{
     Chain, ChainBuilder, ChainError, ChainPair, ChainParams, ChainScene, EdgeOutcome, JointKind,
     JointSpec, Obstacle, SegmentOutcome, ShapeObstacle,
 };
 use motion_bound::testkit::toi::{random_rotation, Rng};
-use motion_bound::{try_triangle_triangle, Convex, Point3, Pose, TriMesh, Vec3};
+use motion_bound::{bodies, try_triangle_triangle, Convex, Point3, Pose, TriMesh, Vec3};
 
 type V3 = [f64; 3];
 type M3 = [[f64; 3]; 3];
@@ -298,26 +298,10 @@ fn mesh(vertices: Vec<V3>, triangles: Vec<[u32; 3]>) -> TriMesh<f64> {
     TriMesh::try_new(vertices, triangles).expect("an inscribed mesh")
 }
 
-/// The box of half extents `h` exactly: its 8 corners, 12 triangles.
+/// The box of half extents `h` exactly: its 8 corners, 12 triangles
+/// (`bodies::cuboid`: `2 h / 2` is `h`).
 fn box_mesh(h: V3) -> TriMesh<f64> {
-    let vertices = (0..8)
-        .map(|i| [0, 1, 2].map(|k| if i >> k & 1 == 1 { h[k] } else { -h[k] }))
-        .collect();
-    let triangles = vec![
-        [0, 2, 3],
-        [0, 3, 1],
-        [4, 5, 7],
-        [4, 7, 6],
-        [0, 1, 5],
-        [0, 5, 4],
-        [2, 6, 7],
-        [2, 7, 3],
-        [0, 4, 6],
-        [0, 6, 2],
-        [1, 3, 7],
-        [1, 7, 5],
-    ];
-    mesh(vertices, triangles)
+    bodies::cuboid(h.map(|x| 2.0 * x)).expect("a box")
 }
 
 /// A surface of revolution about the `y` axis through the profile's points
@@ -847,66 +831,6 @@ fn padded_edges_keep_the_padding_by_exact_distances() {
 
 // ---------------------------------------------------------------------------
 // f32.
-
-fn to32(p: &Pose<f64>) -> Pose<f32> {
-    Pose::new(
-        p.rotation.map(|r| r.map(|x| x as f32)),
-        Vec3::from_array(p.translation.to_array().map(|x| x as f32)),
-    )
-}
-
-fn to64(p: &Pose<f32>) -> Pose<f64> {
-    Pose::new(
-        p.rotation.map(|r| r.map(f64::from)),
-        Vec3::from_array(p.translation.to_array().map(f64::from)),
-    )
-}
-
-/// The chain in `f32`, and the `f64` chain of exactly its numbers.
-fn chain_in_f32(chain: &Chain<f64>) -> (Chain<f32>, Chain<f64>) {
-    let mut b32 = ChainBuilder::<f32>::new();
-    for l in 0..chain.link_count() {
-        let mesh = chain
-            .link_mesh(l)
-            .map(|m| m.try_convert::<f32>().expect("f32 mesh"));
-        b32.add_link(chain.link_name(l).expect("name"), mesh)
-            .expect("link");
-    }
-    for j in chain.joints() {
-        b32.add_joint(JointSpec {
-            name: j.name.clone(),
-            kind: j.kind,
-            parent: j.parent,
-            child: j.child,
-            origin: to32(&j.origin),
-            axis: j.axis.map(|x| x as f32),
-            limits: j.limits.map(|l| l.map(|x| x as f32)),
-        })
-        .expect("joint");
-    }
-    let c32 = b32.build().expect("f32 chain");
-    let mut b64 = ChainBuilder::<f64>::new();
-    for l in 0..c32.link_count() {
-        let mesh = c32
-            .link_mesh(l)
-            .map(|m| m.try_convert::<f64>().expect("f64 mesh"));
-        b64.add_link(c32.link_name(l).expect("name"), mesh)
-            .expect("link");
-    }
-    for j in c32.joints() {
-        b64.add_joint(JointSpec {
-            name: j.name.clone(),
-            kind: j.kind,
-            parent: j.parent,
-            child: j.child,
-            origin: to64(&j.origin),
-            axis: j.axis.map(f64::from),
-            limits: j.limits.map(|l| l.map(f64::from)),
-        })
-        .expect("joint");
-    }
-    (c32, b64.build().expect("f64 chain"))
-}
 
 /// `f32` chains: random chains in `f32` among `f32` mesh boxes and `f32`
 /// cuboid shapes and a floor; the `f64` truth of exactly the same numbers

@@ -284,3 +284,65 @@ pub fn random_chain(rng: &mut Rng, joints: usize, cell: f64) -> Chain<f64> {
     }
     b.build().expect("chain")
 }
+
+/// A pose rounded to `f32`.
+pub fn to32(p: &Pose<f64>) -> Pose<f32> {
+    Pose::new(
+        p.rotation.map(|r| r.map(|x| x as f32)),
+        Vec3::from_array(p.translation.to_array().map(|x| x as f32)),
+    )
+}
+
+/// An `f32` pose in `f64` (exact).
+pub fn to64(p: &Pose<f32>) -> Pose<f64> {
+    Pose::new(
+        p.rotation.map(|r| r.map(f64::from)),
+        Vec3::from_array(p.translation.to_array().map(f64::from)),
+    )
+}
+
+/// The chain in `f32`, and the `f64` chain of exactly its numbers.
+pub fn chain_in_f32(chain: &Chain<f64>) -> (Chain<f32>, Chain<f64>) {
+    let mut b32 = ChainBuilder::<f32>::new();
+    for l in 0..chain.link_count() {
+        let mesh = chain
+            .link_mesh(l)
+            .map(|m| m.try_convert::<f32>().expect("f32 mesh"));
+        b32.add_link(chain.link_name(l).expect("name"), mesh)
+            .expect("link");
+    }
+    for j in chain.joints() {
+        b32.add_joint(JointSpec {
+            name: j.name.clone(),
+            kind: j.kind,
+            parent: j.parent,
+            child: j.child,
+            origin: to32(&j.origin),
+            axis: j.axis.map(|x| x as f32),
+            limits: j.limits.map(|l| l.map(|x| x as f32)),
+        })
+        .expect("joint");
+    }
+    let c32 = b32.build().expect("f32 chain");
+    let mut b64 = ChainBuilder::<f64>::new();
+    for l in 0..c32.link_count() {
+        let mesh = c32
+            .link_mesh(l)
+            .map(|m| m.try_convert::<f64>().expect("f64 mesh"));
+        b64.add_link(c32.link_name(l).expect("name"), mesh)
+            .expect("link");
+    }
+    for j in c32.joints() {
+        b64.add_joint(JointSpec {
+            name: j.name.clone(),
+            kind: j.kind,
+            parent: j.parent,
+            child: j.child,
+            origin: to64(&j.origin),
+            axis: j.axis.map(f64::from),
+            limits: j.limits.map(|l| l.map(f64::from)),
+        })
+        .expect("joint");
+    }
+    (c32, b64.build().expect("f64 chain"))
+}
