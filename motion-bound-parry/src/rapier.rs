@@ -28,9 +28,12 @@
 //! a group and a body it never met) are each where their own motion put
 //! them; a body stopped early may stand where another passes later in the
 //! step (rapier's own clamping has the same limit; substeps remove it). Its
-//! cost is one cast per pair of colliders whose swept boxes meet, found by
-//! a scan of every collider per CCD body: for a few fast bodies, not for
-//! thousands.
+//! cost: each collider's motion and swept box once per step, then one cast
+//! per pair of colliders whose swept boxes meet, unless the balls bounding
+//! them about their motions' centres (which move on straight lines) never
+//! come within the contact distance ([`ClampStats::apart`], a closed form).
+//! The pairs are found by a scan of every collider per CCD collider: for
+//! tens of fast bodies, not for thousands.
 //!
 //! ```
 //! use motion_bound_parry::rapier::CertifiedPass;
@@ -63,8 +66,8 @@ use std::sync::Arc;
 use motion_bound::ca::CaParams;
 use parry3d_f64::bounding_volume::BoundingVolume;
 use rapier3d_f64::dynamics::{RigidBodyHandle, RigidBodySet};
-use rapier3d_f64::geometry::ColliderSet;
-use rapier3d_f64::math::Pose;
+use rapier3d_f64::geometry::{ColliderHandle, ColliderSet};
+use rapier3d_f64::math::{Pose, Vector};
 use rapier3d_f64::parry::query::NonlinearRigidMotion;
 use rapier3d_f64::pipeline::PhysicsWorld;
 
@@ -84,6 +87,10 @@ pub struct ClampStats {
     /// Casts the adapter could not answer (an unsupported shape or input):
     /// those pairs are left to rapier.
     pub unanswered: usize,
+    /// Pairs whose swept boxes met but whose bounding balls (about each
+    /// motion's centre, which moves on a line) never came within the
+    /// contact distance: decided apart without a cast.
+    pub apart: usize,
 }
 
 /// The certified pass (see the module docs).
@@ -98,6 +105,55 @@ pub struct CertifiedPass {
     /// Every body's pose before the step, and whether it is swept (a
     /// dynamic body with CCD enabled).
     before: Vec<(RigidBodyHandle, Pose, bool)>,
+    /// Scratch kept between steps: by a body handle's slot, its generation
+    /// and its index in `before`.
+    index: Vec<Option<(u32, usize)>>,
+    /// Scratch kept between steps: every collider's motion and swept box.
+    placed: Vec<Placed>,
+    /// Scratch kept between steps: each recorded body's motion.
+    motions: Vec<Option<NonlinearRigidMotion>>,
+    /// Scratch kept between steps: the hits `(body, other body, time)`.
+    hits: Vec<(usize, Option<usize>, f64)>,
+}
+
+/// A collider's motion over the step and its swept box, with its body's
+/// index in [`CertifiedPass::before`] (`None` for a collider without a
+/// body).
+#[derive(Debug)]
+struct Placed {
+    body: Option<usize>,
+    /// The motion's centre at the start (it moves at `velocity`).
+    centre: parry3d_f64::math::Vector,
+    velocity: parry3d_f64::math::Vector,
+    /// The largest distance of the collider's points from the centre.
+    radius: f64,
+    motion: NonlinearRigidMotion,
+    swept: parry3d_f64::bounding_volume::Aabb,
+    handle: ColliderHandle,
+}
+
+impl Placed {
+    /// Whether the two colliders' balls about their motions' centres stay
+    /// more than `reach` apart over `[0, dt]`: then no two points of them
+    /// come within `reach` and the pair needs no cast. The centres' least
+    /// distance has a closed form (their difference moves on a line); the
+    /// test keeps a margin of `1e-9` of the scale, which is far above the
+    /// rounding of these few operations in `f64`.
+    fn apart_over(&self, other: &Self, dt: f64, reach: f64) -> bool {
+        let d0 = other.centre - self.centre;
+        let dv = other.velocity - self.velocity;
+        let vv = dv.dot(dv);
+        let t = if vv > 0.0 {
+            (-d0.dot(dv) / vv).clamp(0.0, dt)
+        } else {
+            0.0
+        };
+        let least = (d0 + dv * t).length();
+        let need = self.radius + other.radius + reach;
+        let scale = d0.length() + dt * vv.sqrt() + need;
+        // NaN anywhere: not apart (the cast decides).
+        least > need + 1e-9 * scale
+    }
 }
 
 impl Default for CertifiedPass {
@@ -126,6 +182,10 @@ impl CertifiedPass {
         Self {
             dispatcher: CertifiedDispatcher::new(),
             before: Vec::new(),
+            index: Vec::new(),
+            placed: Vec::new(),
+            motions: Vec::new(),
+            hits: Vec::new(),
         }
     }
 
@@ -197,25 +257,27 @@ impl CertifiedPass {
         }
         let contact_distance = self.dispatcher.params().contact_distance;
         // Each body's motion over the step, about its centre of mass.
-        let motions: Vec<Option<NonlinearRigidMotion>> = self
-            .before
-            .iter()
-            .map(|(h, start, _)| {
-                let b = bodies.get(*h)?;
-                let end = b.position();
-                let com = b.local_center_of_mass();
-                let linvel = (*end * com - *start * com) / dt;
-                let turn = end.rotation * start.rotation.inverse();
-                let angvel = turn.to_scaled_axis() / dt;
-                Some(NonlinearRigidMotion::new(*start, com, linvel, angvel))
-            })
-            .collect();
-        let index: std::collections::HashMap<RigidBodyHandle, usize> = self
-            .before
-            .iter()
-            .enumerate()
-            .map(|(k, (h, _, _))| (*h, k))
-            .collect();
+        let mut motions = core::mem::take(&mut self.motions);
+        motions.clear();
+        motions.extend(self.before.iter().map(|(h, start, _)| {
+            let b = bodies.get(*h)?;
+            let end = b.position();
+            let com = b.local_center_of_mass();
+            let linvel = (*end * com - *start * com) / dt;
+            let turn = end.rotation * start.rotation.inverse();
+            let angvel = turn.to_scaled_axis() / dt;
+            Some(NonlinearRigidMotion::new(*start, com, linvel, angvel))
+        }));
+        // Each recorded body's place in `before`, by its handle's slot.
+        self.index.fill(None);
+        for (k, (h, _, _)) in self.before.iter().enumerate() {
+            let (slot, generation) = h.into_raw_parts();
+            let slot = slot as usize;
+            if self.index.len() <= slot {
+                self.index.resize(slot + 1, None);
+            }
+            self.index[slot] = Some((generation, k));
+        }
         // The swept box of a collider's motion: its start and end boxes
         // merged, grown by how far the rotation can carry a point off the
         // segment between them (`|w| dt` times its reach, at most twice the
@@ -223,79 +285,128 @@ impl CertifiedPass {
         let swept = |m: &NonlinearRigidMotion, s: &dyn parry3d_f64::shape::Shape| {
             let r = s.compute_local_bounding_sphere();
             let reach = r.center.length() + r.radius + m.local_center.length();
-            let a = s.compute_aabb(&m.position_at_time(0.0));
+            // `position_at_time(0)` is `start`; a still motion stays there.
+            let a = s.compute_aabb(&m.start);
+            let still = m.linvel == Vector::ZERO && m.angvel == Vector::ZERO;
+            if still {
+                return a.loosened(contact_distance);
+            }
             let b = s.compute_aabb(&m.position_at_time(dt));
             let grow = (m.angvel.length() * dt).min(2.0) * reach;
             a.merged(&b).loosened(grow + contact_distance)
         };
-        let mut hits: Vec<(usize, Option<usize>, f64)> = Vec::new();
-        for (i, (hi, _, swept_i)) in self.before.iter().enumerate() {
-            let (true, Some(mi), Some(bi)) = (*swept_i, &motions[i], bodies.get(*hi)) else {
-                continue;
+        // Every collider's motion and swept box, once per step: its body's
+        // index (`None` without a body; colliders of bodies not recorded are
+        // left out).
+        self.placed.clear();
+        for (handle, c) in colliders.iter() {
+            let j = match c.parent() {
+                Some(h) => {
+                    let (slot, generation) = h.into_raw_parts();
+                    match self.index.get(slot as usize).copied().flatten() {
+                        Some((g, j)) if g == generation => Some(j),
+                        _ => continue,
+                    }
+                }
+                None => None,
             };
-            for ci in bi.colliders() {
-                let Some(ci) = colliders.get(*ci) else {
+            let m = collider_motion(j.and_then(|j| motions[j].as_ref()), c);
+            let b = swept(&m, c.shape());
+            // Every point of the collider stays within `radius` of its
+            // motion's centre, which moves on a straight line.
+            let ball = c.shape().compute_local_bounding_sphere();
+            let radius = (ball.center - m.local_center).length() + ball.radius;
+            self.placed.push(Placed {
+                body: j,
+                centre: m.start * m.local_center,
+                velocity: m.linvel,
+                radius,
+                motion: m,
+                swept: b,
+                handle,
+            });
+        }
+        let mut hits = core::mem::take(&mut self.hits);
+        hits.clear();
+        for (a, pa) in self.placed.iter().enumerate() {
+            // A swept body's collider (one with a motion).
+            let Some(i) = pa.body else { continue };
+            if !self.before[i].2 || motions[i].is_none() {
+                continue;
+            }
+            for (b, pb) in self.placed.iter().enumerate() {
+                // Another body's collider (a swept one once per pair), or a
+                // collider without a body.
+                match pb.body {
+                    Some(j) if j == i => continue,
+                    Some(j) if self.before[j].2 && motions[j].is_some() && b < a => continue,
+                    _ => {}
+                }
+                if !pa.swept.intersects(&pb.swept) {
+                    continue;
+                }
+                if pa.apart_over(pb, dt, contact_distance) {
+                    stats.apart += 1;
+                    continue;
+                }
+                let (Some(ci), Some(cj)) = (colliders.get(pa.handle), colliders.get(pb.handle))
+                else {
                     continue;
                 };
-                let m1 = collider_motion(Some(mi), ci);
-                let box1 = swept(&m1, ci.shape());
-                for (_, cj) in colliders.iter() {
-                    // Another body's collider (a swept one once per pair),
-                    // or a collider without a body.
-                    let j = match cj.parent() {
-                        Some(hj) if hj == *hi => continue,
-                        Some(hj) => match index.get(&hj) {
-                            Some(&j) if self.before[j].2 && j < i => continue,
-                            Some(&j) => Some(j),
-                            None => continue,
-                        },
-                        None => None,
-                    };
-                    let m2 = collider_motion(j.and_then(|j| motions[j].as_ref()), cj);
-                    if !box1.intersects(&swept(&m2, cj.shape())) {
-                        continue;
+                let j = pb.body;
+                let (m1, m2) = (&pa.motion, &pb.motion);
+                stats.casts += 1;
+                match self
+                    .dispatcher
+                    .cast_certified(m1, ci.shape(), m2, cj.shape(), 0.0, dt, true)
+                {
+                    Ok(Some(hit)) if hit.time_of_impact > 0.0 => {
+                        hits.push((i, j, hit.time_of_impact));
                     }
-                    stats.casts += 1;
-                    match self.dispatcher.cast_certified(
-                        &m1,
-                        ci.shape(),
-                        &m2,
-                        cj.shape(),
-                        0.0,
-                        dt,
-                        true,
-                    ) {
-                        Ok(Some(hit)) if hit.time_of_impact > 0.0 => {
-                            hits.push((i, j, hit.time_of_impact));
+                    // Touching at the start: a resting contact, the
+                    // solver's, unless the step would end it deeper
+                    // than it began (by more than the contact
+                    // distance): then the body is held at its start.
+                    Ok(Some(_)) => {
+                        let depth = |t: f64| {
+                            parry3d_f64::query::contact(
+                                &m1.position_at_time(t),
+                                Swept::see_through(ci.shape()),
+                                &m2.position_at_time(t),
+                                Swept::see_through(cj.shape()),
+                                0.0,
+                            )
+                            .ok()
+                            .flatten()
+                            .map_or(0.0, |c| (-c.dist).max(0.0))
+                        };
+                        if depth(dt) > depth(0.0) + contact_distance {
+                            stats.held += 1;
+                            hits.push((i, j, 0.0));
                         }
-                        // Touching at the start: a resting contact, the
-                        // solver's, unless the step would end it deeper
-                        // than it began (by more than the contact
-                        // distance): then the body is held at its start.
-                        Ok(Some(_)) => {
-                            let depth = |t: f64| {
-                                parry3d_f64::query::contact(
-                                    &m1.position_at_time(t),
-                                    Swept::see_through(ci.shape()),
-                                    &m2.position_at_time(t),
-                                    Swept::see_through(cj.shape()),
-                                    0.0,
-                                )
-                                .ok()
-                                .flatten()
-                                .map_or(0.0, |c| (-c.dist).max(0.0))
-                            };
-                            if depth(dt) > depth(0.0) + contact_distance {
-                                stats.held += 1;
-                                hits.push((i, j, 0.0));
-                            }
-                        }
-                        Ok(_) => {}
-                        Err(_) => stats.unanswered += 1,
                     }
+                    Ok(_) => {}
+                    Err(_) => stats.unanswered += 1,
                 }
             }
         }
+        if !hits.is_empty() {
+            self.stop_groups(bodies, &motions, &hits, &mut stats);
+        }
+        self.motions = motions;
+        self.hits = hits;
+        stats
+    }
+
+    /// Moves the bodies of each group linked by `hits` back to the group's
+    /// earliest time of impact on its motion.
+    fn stop_groups(
+        &self,
+        bodies: &mut RigidBodySet,
+        motions: &[Option<NonlinearRigidMotion>],
+        hits: &[(usize, Option<usize>, f64)],
+        stats: &mut ClampStats,
+    ) {
         // Bodies linked by hits stop together, at their group's earliest
         // time: no pair of a group touches before it (each pair's cast
         // certifies no contact before its own time), and stopped at one
@@ -308,14 +419,14 @@ impl CertifiedPass {
             }
             k
         }
-        for &(i, j, _) in &hits {
+        for &(i, j, _) in hits {
             if let Some(j) = j {
                 let (ri, rj) = (root(&mut group, i), root(&mut group, j));
                 group[ri] = rj;
             }
         }
         let mut first = vec![f64::INFINITY; self.before.len()];
-        for &(i, _, t) in &hits {
+        for &(i, _, t) in hits {
             let r = root(&mut group, i);
             first[r] = first[r].min(t);
         }
@@ -331,6 +442,63 @@ impl CertifiedPass {
                 }
             }
         }
-        stats
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Placed;
+    use motion_bound_devkit::Rng;
+    use parry3d_f64::math::{Pose, Vector};
+    use parry3d_f64::query::NonlinearRigidMotion;
+    use rapier3d_f64::geometry::ColliderHandle;
+
+    fn placed(r: &mut Rng) -> Placed {
+        let v = |r: &mut Rng, s: f64| Vector::new(r.range(-s, s), r.range(-s, s), r.range(-s, s));
+        Placed {
+            body: None,
+            centre: v(r, 1.0),
+            velocity: v(r, 150.0),
+            radius: r.range(0.0, 0.5),
+            motion: NonlinearRigidMotion::constant_position(Pose::IDENTITY),
+            swept: parry3d_f64::bounding_volume::Aabb::new_invalid(),
+            handle: ColliderHandle::invalid(),
+        }
+    }
+
+    /// Against dense sampling of the centres' distance: a pair that comes
+    /// within reach at a sample is never said apart, and a pair that stays
+    /// well apart at every sample (by more than the centres move between
+    /// samples) is.
+    #[test]
+    fn bounding_balls_are_said_apart_exactly_when_sampling_finds_them_apart() {
+        let mut r = Rng::new(17);
+        let dt = 1.0 / 60.0;
+        let reach = 1e-3;
+        const N: usize = 4096;
+        let (mut apart, mut near) = (0, 0);
+        for _ in 0..20_000 {
+            let (a, b) = (placed(&mut r), placed(&mut r));
+            let need = a.radius + b.radius + reach;
+            let least = (0..=N)
+                .map(|k| {
+                    let t = dt * k as f64 / N as f64;
+                    ((b.centre + b.velocity * t) - (a.centre + a.velocity * t)).length()
+                })
+                .fold(f64::INFINITY, f64::min);
+            let said = a.apart_over(&b, dt, reach);
+            assert_eq!(said, b.apart_over(&a, dt, reach));
+            if least <= need {
+                assert!(!said, "sampled {least} within {need}, said apart");
+                near += 1;
+            }
+            let step = (b.velocity - a.velocity).length() * dt / N as f64;
+            if least > need + step + 1e-6 {
+                assert!(said, "sampled {least} beyond {need} by more than {step}");
+                apart += 1;
+            }
+        }
+        // Both kinds occur.
+        assert!(apart > 2000 && near > 2000, "apart {apart}, near {near}");
     }
 }
