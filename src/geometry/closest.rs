@@ -310,9 +310,13 @@ pub(crate) fn triangle_triangle_vec<T: Float>(a: &[Vec3<T>; 3], b: &[Vec3<T>; 3]
     for i in 0..3 {
         best.offer(a[i], closest_on_triangle(a[i], b[0], b[1], b[2]));
         best.offer(closest_on_triangle(b[i], a[0], a[1], a[2]), b[i]);
+        // The edges' interior pairs; their ends against the other's edges
+        // are the vertices' candidates above (`closest_on_triangle` offers
+        // each corner against all three edges).
         for j in 0..3 {
-            let (x, y) = seg_seg(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3]);
-            best.offer(x, y);
+            if let Some((x, y)) = seg_seg_interior(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3]) {
+                best.offer(x, y);
+            }
         }
         if let Some(x) = point_over_triangle(a[i], a[(i + 1) % 3], &b) {
             best.offer(x, closest_on_triangle(x, b[0], b[1], b[2]));
@@ -436,9 +440,16 @@ pub(crate) fn closest_on_segment<T: Float>(p: Vec3<T>, a: Vec3<T>, b: Vec3<T>) -
     a + ab * (num / den)
 }
 
-/// Closest points of two segments, in scaled coordinates.
-fn seg_seg<T: Float>(p0: Vec3<T>, p1: Vec3<T>, q0: Vec3<T>, q1: Vec3<T>) -> (Vec3<T>, Vec3<T>) {
-    let mut best = Best::new();
+/// The closest points of the lines through two segments when both lie
+/// within the segments (the pair of interior points where the segments'
+/// common perpendicular meets them), in scaled coordinates; `None` for
+/// parallel segments or when either point is off its segment.
+fn seg_seg_interior<T: Float>(
+    p0: Vec3<T>,
+    p1: Vec3<T>,
+    q0: Vec3<T>,
+    q1: Vec3<T>,
+) -> Option<(Vec3<T>, Vec3<T>)> {
     let (d1, d2) = (p1 - p0, q1 - q0);
     let n = d1.cross(d2);
     let nn = n.length_squared();
@@ -447,8 +458,17 @@ fn seg_seg<T: Float>(p0: Vec3<T>, p1: Vec3<T>, q0: Vec3<T>, q1: Vec3<T>) -> (Vec
         let s = r.cross(d2).dot(n) / nn;
         let t = r.cross(d1).dot(n) / nn;
         if (T::ZERO..=T::ONE).contains(&s) && (T::ZERO..=T::ONE).contains(&t) {
-            best.offer(p0 + d1 * s, q0 + d2 * t);
+            return Some((p0 + d1 * s, q0 + d2 * t));
         }
+    }
+    None
+}
+
+/// Closest points of two segments, in scaled coordinates.
+fn seg_seg<T: Float>(p0: Vec3<T>, p1: Vec3<T>, q0: Vec3<T>, q1: Vec3<T>) -> (Vec3<T>, Vec3<T>) {
+    let mut best = Best::new();
+    if let Some((x, y)) = seg_seg_interior(p0, p1, q0, q1) {
+        best.offer(x, y);
     }
     best.offer(p0, closest_on_segment(p0, q0, q1));
     best.offer(p1, closest_on_segment(p1, q0, q1));
