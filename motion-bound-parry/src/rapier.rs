@@ -282,8 +282,9 @@ impl CertifiedPass {
         // merged, grown by how far the rotation can carry a point off the
         // segment between them (`|w| dt` times its reach, at most twice the
         // reach), and by the contact distance.
-        let swept = |m: &NonlinearRigidMotion, s: &dyn parry3d_f64::shape::Shape| {
-            let r = s.compute_local_bounding_sphere();
+        let swept = |m: &NonlinearRigidMotion,
+                     s: &dyn parry3d_f64::shape::Shape,
+                     r: &parry3d_f64::bounding_volume::BoundingSphere| {
             let reach = r.center.length() + r.radius + m.local_center.length();
             // `position_at_time(0)` is `start`; a still motion stays there.
             let a = s.compute_aabb(&m.start);
@@ -311,10 +312,10 @@ impl CertifiedPass {
                 None => None,
             };
             let m = collider_motion(j.and_then(|j| motions[j].as_ref()), c);
-            let b = swept(&m, c.shape());
+            let ball = c.shape().compute_local_bounding_sphere();
+            let b = swept(&m, c.shape(), &ball);
             // Every point of the collider stays within `radius` of its
             // motion's centre, which moves on a straight line.
-            let ball = c.shape().compute_local_bounding_sphere();
             let radius = (ball.center - m.local_center).length() + ball.radius;
             self.placed.push(Placed {
                 body: j,
