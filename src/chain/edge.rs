@@ -21,7 +21,7 @@ use alloc::vec::Vec;
 
 use crate::bvh::{Hierarchy, NO_CHILD};
 use crate::chain::bound::LinkMotion;
-use crate::chain::gap::{box_support_up, from_box, placed_corners, slab_gap};
+use crate::chain::gap::{axes_gap, box_support_up, from_box, placed_corners, slab_gap};
 use crate::chain::report::ChainPair;
 use crate::chain::segment::{take_motion, Segment, Work};
 use crate::chain::shapes::{node_points, triangle_points_gap, Against, Geometry, ShapeObstacle};
@@ -719,21 +719,13 @@ impl<T: Float> Edge<'_, T> {
                 stats.leaf_tests += 1;
                 let pa = placed_corners(ta, la, ma);
                 let pb = placed_corners(tb, lb, mb);
-                // First the cheap slab gaps: along the balls' centre line,
-                // then along each triangle's normal (turned towards the
-                // other): near surfaces face each other.
+                // First the cheap slab gaps: along the balls' centre line
+                // (for a small triangle against a much larger one, a link's
+                // against a pole's long side, first the direction from the
+                // larger's point nearest the smaller's ball centre), then
+                // along the pair's separating axes (near surfaces face each
+                // other, or two large triangles lie side by side).
                 let line = cb - ca;
-                let facing = |t: &[Vec3<T>; 3], sign: T| {
-                    let n = (t[1] - t[0]).cross(t[2] - t[0]);
-                    if n.dot(line) * sign < T::ZERO {
-                        -n
-                    } else {
-                        n
-                    }
-                };
-                // For a small triangle against a much larger one (a link's
-                // against a pole's long side), first the direction from the
-                // larger's point nearest the smaller's ball centre.
                 let first = lopsided.then(|| {
                     if rb > ra {
                         point_triangle_vec(ca, pb).on_b - ca
@@ -741,13 +733,13 @@ impl<T: Float> Edge<'_, T> {
                         cb - point_triangle_vec(cb, pa).on_b
                     }
                 });
-                for d in first
-                    .into_iter()
-                    .chain([line, facing(&pa, T::ONE), facing(&pb, -T::ONE)])
-                {
+                for d in first.into_iter().chain([line]) {
                     if slab_gap(&pa, &pb, d, ma, mb, T::ZERO) > need {
                         return Verdict::Clear;
                     }
+                }
+                if axes_gap(&pa, &pb, ma, mb, T::ZERO, need) > need {
+                    return Verdict::Clear;
                 }
                 let cp = triangle_triangle_vec(&pa, &pb);
                 let gap = slab_gap(&pa, &pb, cp.on_b - cp.on_a, ma, mb, T::ZERO);
