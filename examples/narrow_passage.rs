@@ -346,7 +346,7 @@ fn main() -> Result<(), Error> {
             );
             let [mean, median, p99, _] = stats(&mut tests);
             println!(
-                "    pairs measured (`EdgeStats::tests`) mean {mean:.0}, median {median:.0}, p99 {p99:.0}; exact leaf measurements mean {:.0}",
+                "    pairs measured (`EdgeStats::tests`) mean {mean:.0}, median {median:.0}, p99 {p99:.0}; leaf pairs measured mean {:.0}",
                 leaves as f64 / tests.len() as f64
             );
             failed |= missed + late > 0;

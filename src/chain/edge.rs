@@ -72,8 +72,9 @@ pub struct EdgeStats {
     /// Items tested (a ball or triangle against what it is checked
     /// against): the work the budget counts.
     pub tests: usize,
-    /// Exact leaf measurements among them (triangle against a shape, a
-    /// triangle or a cloud's points).
+    /// Leaf pairs among them (a triangle against a shape, a triangle or a
+    /// cloud's points), measured at one time: by slab gaps first, and by
+    /// their closest points only where the slabs do not clear them.
     pub leaf_tests: usize,
     /// Time intervals the chain was placed for (forward kinematics).
     pub intervals: usize,
