@@ -205,11 +205,12 @@ pub(super) fn slab_gap<T: Float>(
 /// larger of `min_B q.n - max_A p.n` and `min_A p.n - max_B q.n`), less the
 /// rounding and `inflate` as [`slab_gap`]. It stops at the first direction
 /// whose gap exceeds `enough`. Each slab gap is at most the distance
-/// (Lemma 13.6, item 4), so the largest is too; for two disjoint triangles
-/// the largest over these axes is positive, and it is the distance where the
-/// nearest points are a face's and a corner's or two edges' interiors. Two
-/// large triangles side by side (a link's side along a pole's long face)
-/// are told apart here without their closest points, at a fifth of the cost.
+/// (Lemma 13.6, item 4), so the largest is too. It is the distance where the
+/// nearest points are a face's inside and a corner, or two edges' insides;
+/// coplanar triangles are not separated by these axes (all are normal to
+/// the plane), and are left to their closest points. Two large triangles
+/// side by side (a link's side along a pole's long face) are told apart
+/// here without their closest points.
 pub(super) fn axes_gap<T: Float>(
     pa: &[Vec3<T>; 3],
     pb: &[Vec3<T>; 3],
