@@ -2,7 +2,7 @@
 //! the crate: time per query and instruction counts.
 //!
 //! ```sh
-//! cargo run --release -p motion-bound-compare --example knots -- [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq] [--front on|off]
+//! cargo run --release -p motion-bound-compare --example knots -- [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq] [--front on|off] [--witness closest|first] [--witness-tolerance X]
 //! ```
 //!
 //! Runs queries `K .. K + N` of the scene of `--queries`'s length (default:
@@ -10,7 +10,10 @@
 //! eight, and prints per size: mean ms per query (the `Instant` around each
 //! query, as `table1` times it), iterations, node pairs, triangle pairs,
 //! contacts and separations. `--front on` carries the front from step to
-//! step (`MeshParams::carry_front`). The queries are timed inside
+//! step (`MeshParams::carry_front`); `--witness first` stops at the first pair
+//! found within the contact distance (`WitnessSearch::First`; default: the
+//! closest pair), and `--witness-tolerance X` lets the witness be up to `X`
+//! farther than the closest pair (`CaParams::witness_tolerance`). The queries are timed inside
 //! `run_queries`, which is never inlined, so that an instruction count can
 //! be limited to them (the trees' builds left out):
 //!
@@ -26,7 +29,7 @@
 use std::process::ExitCode;
 use std::time::Instant;
 
-use motion_bound::ca::{BoundChoice, CaOutcome, CaParams, MeshParams};
+use motion_bound::ca::{BoundChoice, CaOutcome, CaParams, MeshParams, WitnessSearch};
 #[allow(deprecated)] // The old path, so that this file still builds against older commits.
 use motion_bound::scenes::TorusKnotSize;
 use motion_bound::testkit::table1::{label, KnotScene, SPIN};
@@ -73,6 +76,8 @@ fn main() -> ExitCode {
     let mut sizes = TorusKnotSize::ALL.to_vec();
     let (mut queries, mut skip, mut bound) = (200, 0, BoundChoice::Evq);
     let mut mesh = MeshParams::default();
+    let mut witness = WitnessSearch::default();
+    let mut tolerance = 0.0;
     let mut it = std::env::args().skip(1);
     while let Some(flag) = it.next() {
         let value = it.next().unwrap_or_default();
@@ -89,9 +94,15 @@ fn main() -> ExitCode {
             "--bound" if value == "evq" => bound = BoundChoice::Evq,
             "--front" if value == "on" => mesh = mesh.with_carry_front(true),
             "--front" if value == "off" => mesh = mesh.with_carry_front(false),
+            "--witness" if value == "closest" => witness = WitnessSearch::Closest,
+            "--witness" if value == "first" => witness = WitnessSearch::First,
+            "--witness-tolerance" => match value.parse::<f64>() {
+                Ok(x) => tolerance = x,
+                Err(_) => tolerance = f64::NAN,
+            },
             _ => {
                 eprintln!(
-                    "usage: knots [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq] [--front on|off]"
+                    "usage: knots [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq] [--front on|off] [--witness closest|first] [--witness-tolerance X]"
                 );
                 return ExitCode::FAILURE;
             }
@@ -101,7 +112,13 @@ fn main() -> ExitCode {
         eprintln!("--queries must be positive and --sizes name 2.8K, 11K or 34K");
         return ExitCode::FAILURE;
     }
-    let params = KnotScene::params(bound);
+    let params = KnotScene::params(bound)
+        .with_witness(witness)
+        .with_witness_tolerance(tolerance);
+    if params.validate().is_err() {
+        eprintln!("--witness-tolerance must be finite and at least 0");
+        return ExitCode::FAILURE;
+    }
     for size in sizes {
         let scene = KnotScene::new(size, skip + queries, SPIN);
         for q in scene.queries.iter().take(8) {

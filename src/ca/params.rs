@@ -138,6 +138,16 @@ pub struct CaParams<T> {
     /// Which pair a contact reports as its witness. Default
     /// [`WitnessSearch::Closest`].
     pub witness: WitnessSearch,
+    /// How far the witness of [`WitnessSearch::Closest`] may be from the
+    /// least distance: the search for the closest pair stops once every
+    /// pair left is certified no closer than the witness's distance minus
+    /// this, so the witness's distance is at most the least distance plus
+    /// this (each distance the exact distance of the triangles as placed, to
+    /// its rounding). A search that may stop early costs less when many
+    /// pairs are nearly as close as the closest (flat faces resting on flat
+    /// faces). Default `0`: the closest pair. Must be finite and at least
+    /// `0`; the contact's time is the same whatever it is.
+    pub witness_tolerance: T,
 }
 
 impl<T: Float> Default for CaParams<T> {
@@ -152,6 +162,7 @@ impl<T: Float> Default for CaParams<T> {
             one_sided: true,
             work_budget: Self::DEFAULT_WORK_BUDGET,
             witness: WitnessSearch::Closest,
+            witness_tolerance: T::ZERO,
         }
     }
 }
@@ -188,6 +199,25 @@ impl<T: Float> CaParams<T> {
     #[must_use]
     pub const fn with_witness(mut self, search: WitnessSearch) -> Self {
         self.witness = search;
+        self
+    }
+
+    /// With another witness tolerance
+    /// ([`witness_tolerance`](Self::witness_tolerance)).
+    ///
+    /// ```
+    /// use motion_bound::ca::{CaError, CaParams, Parameter};
+    /// let p = CaParams::<f64>::default().with_contact_distance(1e-3);
+    /// // An engine that builds contacts to a micrometre needs no closer pair.
+    /// assert!(p.with_witness_tolerance(1e-6).validate().is_ok());
+    /// assert_eq!(
+    ///     p.with_witness_tolerance(-1.0).validate(),
+    ///     Err(CaError::InvalidParameter(Parameter::WitnessTolerance))
+    /// );
+    /// ```
+    #[must_use]
+    pub const fn with_witness_tolerance(mut self, tolerance: T) -> Self {
+        self.witness_tolerance = tolerance;
         self
     }
 
@@ -299,7 +329,7 @@ impl<T: Float> CaParams<T> {
     ///
     /// # Errors
     /// [`CaError::InvalidParameter`] naming a zero contact distance, a
-    /// tolerance that is negative, NaN
+    /// tolerance (of time or of the witness) that is negative, NaN
     /// or infinite, a zero iteration limit, or a horizon factor that is
     /// neither `0` nor above `1`.
     pub fn validate(&self) -> Result<(), CaError> {
@@ -312,6 +342,9 @@ impl<T: Float> CaParams<T> {
         }
         if !ok(self.time_tolerance) {
             return Err(CaError::InvalidParameter(Parameter::TimeTolerance));
+        }
+        if !ok(self.witness_tolerance) {
+            return Err(CaError::InvalidParameter(Parameter::WitnessTolerance));
         }
         let f = self.horizon_factor;
         if !(f == T::ZERO || f > T::ONE) {
@@ -428,6 +461,8 @@ pub enum Parameter {
     AcceptFraction,
     /// [`MeshParams::far_ratio`]: at least `0`.
     FarRatio,
+    /// [`CaParams::witness_tolerance`]: finite and at least `0`.
+    WitnessTolerance,
 }
 
 impl fmt::Display for Parameter {
@@ -439,6 +474,7 @@ impl fmt::Display for Parameter {
             Self::HorizonFactor => "horizon_factor (0 or above 1)",
             Self::AcceptFraction => "accept_fraction (in (0, 1])",
             Self::FarRatio => "far_ratio (at least 0)",
+            Self::WitnessTolerance => "witness_tolerance (finite, at least 0)",
         })
     }
 }

@@ -35,11 +35,37 @@ pub(super) struct Found<T> {
     pub(super) touching: Option<Witness<T>>,
     pub(super) touching_triangles: Option<(u32, u32)>,
     pub(super) touching_normal: Option<Direction<T>>,
+    /// How far the witness may be from the closest pair
+    /// ([`CaParams::witness_tolerance`](crate::ca::CaParams::witness_tolerance)).
+    pub(super) tolerance: T,
 }
 
-impl<T> Default for Found<T> {
+impl<T: Float> Found<T> {
+    /// Nothing found yet, in a search for the closest pair to within
+    /// `tolerance`.
+    pub(super) fn new(tolerance: T) -> Self {
+        Self {
+            tolerance,
+            ..Self::default()
+        }
+    }
+
+    /// Once a contact is found, the certified gap a pair must be below to be
+    /// searched further for a closer one: the contact's distance less the
+    /// tolerance, rounded down (exactly the distance for a zero tolerance).
+    /// A pair whose gap is at least this is no closer than the witness by
+    /// more than the tolerance.
+    #[inline]
+    pub(super) fn bar(&self) -> Option<T> {
+        self.touching
+            .map(|w| crate::rounding::diff_down(w.distance, self.tolerance))
+    }
+}
+
+impl<T: Float> Default for Found<T> {
     fn default() -> Self {
         Self {
+            tolerance: T::ZERO,
             closest: None,
             closest_triangles: None,
             normal: None,
@@ -93,8 +119,8 @@ impl<T: Float> Found<T> {
     /// closest pair: near pairs come first, least certified gap (a lower
     /// bound of their distance) first, and every other pair is farther than
     /// the contact distance; so the descent stops at the first pair that is
-    /// not near or not closer than the contact (at once when only the first
-    /// contact is wanted). Before that it is best-first: every pair left
+    /// not near or whose gap is not below the contact's [`bar`](Self::bar)
+    /// (at once when only the first contact is wanted). Before that it is best-first: every pair left
     /// has a step at least `key`, so once `key` reaches `best * accept`,
     /// `min(best, key)` is safe for the whole meshes. Out of work, a contact
     /// already found stands (its witness the closest pair so far); anything
@@ -107,8 +133,8 @@ impl<T: Float> Found<T> {
         first_only: bool,
         out_of_work: bool,
     ) -> Head {
-        if let Some(touch) = self.touching {
-            if first_only || !near || key >= touch.distance {
+        if let Some(bar) = self.bar() {
+            if first_only || !near || key >= bar {
                 return Head::Stop;
             }
         } else if !near && key >= best * accept {
@@ -123,12 +149,12 @@ impl<T: Float> Found<T> {
 
     /// Whether a child node pair whose own step is `step` goes into the
     /// queue (the others are pruned): once a contact is found, a near pair
-    /// closer than it; before that, a near pair or one whose step is short
-    /// of the best step `best`.
+    /// whose gap is below the [`bar`](Self::bar); before that, a near pair
+    /// or one whose step is short of the best step `best`.
     #[inline]
     pub(super) fn queues(&self, step: NodeStep<T>, best: T) -> bool {
-        match (step, self.touching) {
-            (NodeStep::Near(g), Some(touch)) if g < touch.distance => true,
+        match (step, self.bar()) {
+            (NodeStep::Near(g), Some(bar)) if g < bar => true,
             (_, Some(_)) => false,
             (NodeStep::Apart { step, .. }, None) if step >= best => false,
             (_, None) => true,

@@ -230,7 +230,7 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
         let kind = params.bound.cheap_kind();
         let first_only = params.witness == WitnessSearch::First;
         let (start, budget) = (self.stats, params.work_budget);
-        let mut found = Found::default();
+        let mut found = Found::new(params.witness_tolerance);
         // The front of the last step, when it is this query's and at most
         // half of it is stale against the last step's length (Lemma 9.9;
         // no seeds here to estimate this step's).
