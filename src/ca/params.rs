@@ -46,8 +46,10 @@ pub enum WitnessSearch {
     /// contact distance is found, a branch and bound over the pairs whose
     /// certified gaps are below its distance (within the work budget; a
     /// budget that runs out keeps the closest found so far). What an engine
-    /// builds contact points and normals from. About a quarter to a third
-    /// more work on the seed's Table 1 queries (`docs/performance.md`).
+    /// builds contact points and normals from. The search starts from the
+    /// last step's front of node pairs: about 2 % more instructions than
+    /// [`First`](Self::First) on the seed's Table 1 knots (`docs/performance.md`).
+    /// [`CaParams::witness_tolerance`] lets it stop earlier.
     #[default]
     Closest,
     /// The first pair found within the contact distance: no search beyond
