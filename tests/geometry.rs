@@ -371,13 +371,8 @@ proptest! {
 /// (an upper bound, so never below it).
 #[test]
 fn the_witness_measure_is_tight_on_narrow_triangles() {
-    let mut seed = 0x5eed_u64;
-    let mut r = || {
-        seed = seed
-            .wrapping_mul(6364136223846793005)
-            .wrapping_add(1442695040888963407);
-        (seed >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = motion_bound::testkit::toi::Rng::new(0x5eed);
+    let mut r = || rng.unit();
     let u = f64::EPSILON / 2.0;
     for _ in 0..2000 {
         let o = [r() - 0.5, r() - 0.5, r() - 0.5];

@@ -14,7 +14,7 @@
 //!   checks can tell a tolerance from none.
 
 use motion_bound::bodies::{board, icosphere, torus};
-use motion_bound::ca::{time_of_impact, CaOutcome, CaParams, CaReport, MeshPair};
+use motion_bound::ca::{time_of_impact, CaParams, MeshPair};
 use motion_bound::testkit::ground_truth::place;
 use motion_bound::testkit::toi::{fly_by, reach, Rng};
 use motion_bound::{gjk_distance, BallTree, ConvexPolytope, GjkParams, Pose, RigidMotion, TriMesh};
@@ -61,14 +61,6 @@ fn least_distance(a: &Placed, b: &Placed) -> (f64, f64) {
     (lower, upper)
 }
 
-/// The contact of a query, if it ended in one.
-fn contact_of(report: &CaReport<f64>) -> Option<motion_bound::ca::Contact<f64>> {
-    match report.outcome {
-        CaOutcome::Contact { contact, .. } | CaOutcome::InitialContact(contact) => Some(contact),
-        _ => None,
-    }
-}
-
 /// `n` fly-bys of `a` past `b` with the contact distance `1 %` of the
 /// reaches, run with no tolerance and with `fraction` of the contact
 /// distance; checks every contact of the latter against the brute force.
@@ -96,7 +88,7 @@ fn scene(name: &str, a: &TriMesh<f64>, b: &TriMesh<f64>, fraction: f64, n: usize
         let (r0, r1) = (run(&exact), run(&loose));
         work_exact += r0.work.node_pairs;
         work_loose += r1.work.node_pairs;
-        let (c0, c1) = (contact_of(&r0), contact_of(&r1));
+        let (c0, c1) = (r0.outcome.contact(), r1.outcome.contact());
         assert_eq!(
             c0.map(|c| c.time),
             c1.map(|c| c.time),
