@@ -150,6 +150,33 @@ pub(crate) fn frame_margin_up<T: Float>(w_l1: T, theta_m: T, oriented: bool, off
     }
 }
 
+/// `proofs/12-shapes.md`, Lemma 12.5: an upper bound of `|w x Q0 y|`, the
+/// rate at which a body's `y` axis turns (`Q0` the exact start orientation,
+/// `y` the body's unit `y` axis), from the computed body-frame angular
+/// velocity `wb = fl(M^T w)` and the computed world `w_l1 = fl(|w|_1)`:
+/// `|w_b x y| = sqrt(w_bx^2 + w_bz^2) <= |w_bx| + |w_bz|`, the sum of two
+/// absolute values rounded up by one `next_up`; for an oriented motion plus
+/// the frame error `|fl(M^T w) - Q0^T w| <= 86 u |w| + 32 eta` (Lemma O.2's
+/// matrix and product errors, `|w| <= |w|_1 <= w_l1 (1 + gamma_2)`), taken
+/// as `next_up(96 u w_l1) + 32 eta`. `+inf` for a NaN.
+#[inline]
+#[must_use]
+pub(crate) fn axis_tilt_up<T: Float>(wb: [T; 3], w_l1: T, oriented: bool) -> T {
+    let tilt = (wb[0].abs() + wb[2].abs()).next_up();
+    let tilt = if oriented {
+        let err =
+            (T::from_u32(96) * T::UNIT_ROUNDOFF * w_l1).next_up() + T::from_u32(32) * T::ETA_NORMAL;
+        (tilt + err).next_up()
+    } else {
+        tilt
+    };
+    if tilt.is_nan() {
+        T::INFINITY
+    } else {
+        tilt
+    }
+}
+
 /// Section "Orientation": a lever radius `(r_hat + c_hat)(1 + gamma_2)` that
 /// bounds `|r - c|` for every point within `r_hat` of the body origin and a
 /// rotation centre `c` within `c_hat` of it; exactly `r_hat` when `c_hat = 0`.
@@ -618,7 +645,6 @@ pub(crate) fn from_f64_up<T: Float>(x: f64) -> T {
 /// Section "Swept box": a float at least the exact `a + b` of two finite
 /// floats, `next_up(fl(a + b))` (round to nearest never errs by a whole ulp,
 /// so the exact sum lies below the next float; gradual underflow included).
-#[cfg(feature = "alloc")]
 #[inline]
 #[must_use]
 pub(crate) fn add_up<T: Float>(a: T, b: T) -> T {
@@ -636,7 +662,6 @@ pub(crate) fn sub_down<T: Float>(a: T, b: T) -> T {
 
 /// Section "Pieces": a float at least the exact `a b` of two finite
 /// non-negative floats, `next_up(fl(a b))` (gradual underflow included).
-#[cfg(feature = "alloc")]
 #[inline]
 #[must_use]
 pub(crate) fn mul_up<T: Float>(a: T, b: T) -> T {

@@ -4,8 +4,8 @@
 use crate::bound::projection::{nevq_rate_from, nevq_speed_from, Projection};
 use crate::bound::scan::{arc_scan, arc_signed_scan, full_turn_scan};
 use crate::rounding::{
-    assemble, evq_rotational_up, lever_up, nevq_rotational_up, one_sided_decision_slack,
-    one_sided_up, radius_up, sum_up,
+    add_up, assemble, evq_rotational_up, lever_up, mul_up, nevq_rotational_up,
+    one_sided_decision_slack, one_sided_up, radius_up, sum_up,
 };
 use crate::{
     BodySummary, BoundKind, BoundingBall, Convex, Direction, Float, PreparedMotion, SweptArc, Vec3,
@@ -34,6 +34,8 @@ pub struct DirectedProbe<T> {
     offset_up: T,
     /// The frame margin's coefficient (`rounding::frame_margin_up`).
     frame_margin: T,
+    /// An upper bound of `|w x Q0 y|` (`rounding::axis_tilt_up`).
+    axis_tilt: T,
 }
 
 impl<T: Float> PreparedMotion<T> {
@@ -67,6 +69,7 @@ impl<T: Float> PreparedMotion<T> {
             offset: m.local_centre(),
             offset_up: m.local_reach(),
             frame_margin: self.frame_margin,
+            axis_tilt: self.axis_tilt,
         }
     }
 }
@@ -285,7 +288,7 @@ impl<T: Float> DirectedProbe<T> {
     /// ```
     #[must_use]
     pub fn convex_rate(&self, shape: &Convex<'_, T>, kind: BoundKind) -> T {
-        self.convex_bound(shape, kind, Self::dilated_rate)
+        self.convex_bound(shape, kind, Self::dilated_rate, shape.radius())
     }
 
     /// The (absolute) speed bound of kind `kind` for every point of a
@@ -293,16 +296,92 @@ impl<T: Float> DirectedProbe<T> {
     /// [`convex_rate`](Self::convex_rate)).
     #[must_use]
     pub fn convex_speed(&self, shape: &Convex<'_, T>, kind: BoundKind) -> T {
-        self.convex_bound(shape, kind, Self::dilated_speed)
+        self.convex_bound(shape, kind, Self::dilated_speed, shape.radius())
+    }
+
+    /// An upper bound of the rate at which a convex shape's **support**
+    /// along `n`, `max_{p in S(t)} p . n` (along the exact unit `n/|n|`),
+    /// rises over the motion's interval: what conservative advancement
+    /// needs (`proofs/12-shapes.md`, Lemma 12.5), and never more than
+    /// [`convex_rate`](Self::convex_rate), which bounds every point.
+    ///
+    /// Motion that maps the shape onto itself does not count:
+    /// * the shape's radius is dropped (the support of `K + B(rho)` is the
+    ///   core's plus the constant `rho`), so a ball turning about its centre
+    ///   rises at its centre's rate, whatever it spins;
+    /// * a capsule, cylinder or cone (rounded or not, not placed in a
+    ///   compound) whose rotation centre lies on its axis moves as its axis
+    ///   does: at most the rate of the axis point nearest the rotation
+    ///   centre plus `|w x a| rho_o`, with `a` the axis and `rho_o` the
+    ///   core's reach from that point. A wheel rolling about its axle or a
+    ///   capsule spinning about its own axis rises at its translation's
+    ///   rate. The least of this and the cover's bound is returned.
+    ///
+    /// ```
+    /// use motion_bound::{BoundKind, Convex, Direction, PreparedMotion, RigidMotion};
+    /// // A wheel (a cylinder along y) rolling along x at 1 on a floor below it:
+    /// // radius 0.5, spinning about its axle y at 2 rad per unit time.
+    /// let wheel = Convex::try_cylinder(0.1, 0.5)?;
+    /// let m = RigidMotion::try_from_arrays([0.0; 3], [1.0, 0.0, 0.0], [0.0, 2.0, 0.0])?;
+    /// let down = PreparedMotion::new(&m).probe(-Direction::Z);
+    /// // Every rim point moves along z at up to 2 * 0.5; the support does not move.
+    /// assert!(down.convex_rate(&wheel, BoundKind::Evq) >= 1.0);
+    /// assert!(down.convex_support_rate(&wheel, BoundKind::Evq) < 1e-12);
+    /// # Ok::<(), motion_bound::InputError>(())
+    /// ```
+    #[must_use]
+    pub fn convex_support_rate(&self, shape: &Convex<'_, T>, kind: BoundKind) -> T {
+        let cover = self.convex_bound(shape, kind, Self::dilated_rate, T::ZERO);
+        match self.axial(shape) {
+            Some((o, o_reach, spin)) => cover.min_nan(up_or_inf(add_up(
+                self.points_rate(&[o], o_reach, kind),
+                spin,
+            ))),
+            None => cover,
+        }
+    }
+
+    /// The absolute counterpart of
+    /// [`convex_support_rate`](Self::convex_support_rate): an upper bound of
+    /// how fast the support along `n` moves either way; never more than
+    /// [`convex_speed`](Self::convex_speed).
+    #[must_use]
+    pub fn convex_support_speed(&self, shape: &Convex<'_, T>, kind: BoundKind) -> T {
+        let cover = self.convex_bound(shape, kind, Self::dilated_speed, T::ZERO);
+        match self.axial(shape) {
+            Some((o, o_reach, spin)) => {
+                let centre = match kind {
+                    BoundKind::Nevq => nevq_speed_from(&self.p, lever_up(o_reach, self.offset_up)),
+                    BoundKind::Evq => self.evq_speed_points(&[o], o_reach),
+                };
+                cover.min_nan(up_or_inf(add_up(centre, spin)))
+            }
+            None => cover,
+        }
+    }
+
+    /// For an axially symmetric shape (`Convex::axial_reach`): the axis
+    /// point `o = (0, c_y, 0)` nearest the rotation centre `c`, `|o|`, and
+    /// an upper bound of `|w x a| rho_o` (Lemma 12.5).
+    #[inline]
+    fn axial(&self, shape: &Convex<'_, T>) -> Option<([T; 3], T, T)> {
+        let y = self.offset.y;
+        let reach = shape.axial_reach(y)?;
+        Some((
+            [T::ZERO, y, T::ZERO],
+            y.abs(),
+            mul_up(self.axis_tilt, reach),
+        ))
     }
 
     /// `bound` over the shape's cover: the main group dilated by its own
-    /// radius plus the shape's, and a cone's apex by the shape's radius.
+    /// radius plus `radius`, and a cone's apex by `radius`.
     fn convex_bound(
         &self,
         shape: &Convex<'_, T>,
         kind: BoundKind,
         bound: fn(&Self, &[[T; 3]], T, T, BoundKind) -> T,
+        radius: T,
     ) -> T {
         let g = shape.bound_groups();
         let points = g.points();
@@ -314,13 +393,13 @@ impl<T: Float> DirectedProbe<T> {
             self,
             points,
             radius_up(r_hat),
-            dilation_up(g.dilation, shape.radius()),
+            dilation_up(g.dilation, radius),
             kind,
         );
         match g.second {
             Some((p, d)) => {
                 let r = radius_up(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-                main.max_nan(bound(self, &[p], r, dilation_up(d, shape.radius()), kind))
+                main.max_nan(bound(self, &[p], r, dilation_up(d, radius), kind))
             }
             None => main,
         }
@@ -459,6 +538,16 @@ impl<T: Float> DirectedProbe<T> {
     #[inline]
     pub(crate) fn linear_raw(&self) -> T {
         self.p.a.abs()
+    }
+}
+
+/// `x`, or `+inf` for a NaN (an overflowed sum of bounds is no bound).
+#[inline]
+fn up_or_inf<T: Float>(x: T) -> T {
+    if x.is_nan() {
+        T::INFINITY
+    } else {
+        x
     }
 }
 

@@ -187,19 +187,42 @@ impl<T: Float> CaStep<T> for ConvexPair<'_, T> {
         let (eb, reach_b) = placement_error(b.motion(), t, self.b.reach());
         let g = certified_gap((&self.a, &pose_a, ea), (&self.b, &pose_b, eb), n.get());
         let mu = closing((a, &self.a), (b, &self.b), n, params);
+        // Where the closest direction lost more than half the distance (a
+        // curved core nearly touching a box in `f32`), a box's face normal
+        // too; the longer step is taken (both are safe, Lemma 12.1).
+        let clearance = params.clearance();
+        let (mut g, mut mu, mut dir) = (g, mu, n);
+        if g < (distance - clearance) * T::HALF {
+            let faces = [
+                self.a.face_normal(&pose_a, n.get()),
+                self.b.face_normal(&pose_b, -n.get()).map(|f| -f),
+            ];
+            for face in faces.into_iter().flatten() {
+                let Ok(m) = Direction::try_new(face) else {
+                    continue;
+                };
+                let g2 = certified_gap((&self.a, &pose_a, ea), (&self.b, &pose_b, eb), m.get());
+                let mu2 = closing((a, &self.a), (b, &self.b), m, params);
+                if step_down(g2, clearance, mu2.0, mu2.1) > step_down(g, clearance, mu.0, mu.1) {
+                    (g, mu, dir) = (g2, mu2, m);
+                }
+            }
+        }
         advance(
             g,
             mu,
             ((ea, eb), (reach_a, reach_b)),
             params,
-            (witness(Some(n)), n),
+            (witness(Some(n)), dir),
         )
     }
 }
 
 /// The bounds on how fast the slab between shapes `A` and `B` along `n`
-/// (from A to B) closes: the one-sided rates of A along `n` and B along
-/// `-n` (Lemma 10.2), or, without one-sided bounds, their absolute speeds.
+/// (from A to B) closes: the one-sided rates of A's support along `n` and
+/// B's along `-n` (Lemma 10.2 with Lemma 12.5: motion that maps a shape
+/// onto itself does not count), or, without one-sided bounds, their
+/// absolute speeds.
 pub(crate) fn closing<T: Float>(
     (a, sa): (&PreparedMotion<T>, &Convex<'_, T>),
     (b, sb): (&PreparedMotion<T>, &Convex<'_, T>),
@@ -209,13 +232,13 @@ pub(crate) fn closing<T: Float>(
     let kind = params.bound.cheap_kind();
     if params.one_sided {
         (
-            a.probe(n).convex_rate(sa, kind),
-            b.probe(-n).convex_rate(sb, kind),
+            a.probe(n).convex_support_rate(sa, kind),
+            b.probe(-n).convex_support_rate(sb, kind),
         )
     } else {
         (
-            a.probe(n).convex_speed(sa, kind),
-            b.probe(n).convex_speed(sb, kind),
+            a.probe(n).convex_support_speed(sa, kind),
+            b.probe(n).convex_support_speed(sb, kind),
         )
     }
 }

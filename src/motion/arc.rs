@@ -1,7 +1,7 @@
 //! The arc swept by the rotating direction over a motion's interval,
 //! precomputed once per motion.
 
-use crate::rounding::frame_margin_up;
+use crate::rounding::{axis_tilt_up, frame_margin_up};
 use crate::{Float, RigidMotion, Vec3};
 
 /// What the EVQ case split needs of a motion's rotation over its interval
@@ -122,6 +122,10 @@ pub struct PreparedMotion<T> {
     /// when the body frame is the world frame and the rotation centre the
     /// body origin.
     pub(crate) frame_margin: T,
+    /// An upper bound of `|w x Q0 y|`, how fast the body's `y` axis turns
+    /// (`rounding::axis_tilt_up`): what an axially symmetric shape's support
+    /// moves by under the turn (`proofs/12-shapes.md`, Lemma 12.5).
+    pub(crate) axis_tilt: T,
 }
 
 impl<T: Float> PreparedMotion<T> {
@@ -137,11 +141,17 @@ impl<T: Float> PreparedMotion<T> {
             !motion.orientation().is_identity(),
             motion.local_centre() != Vec3::ZERO,
         );
+        let axis_tilt = axis_tilt_up(
+            body_angular.to_array(),
+            motion.angular().norm_l1(),
+            !motion.orientation().is_identity(),
+        );
         Self {
             motion: *motion,
             arc,
             body_angular,
             frame_margin,
+            axis_tilt,
         }
     }
 

@@ -551,6 +551,59 @@ impl<'a, T: Float> Convex<'a, T> {
         }
     }
 
+    /// For a cuboid core not placed in the body frame, the outward normal
+    /// (in the world, by `pose`'s matrix) of the face most aligned with the
+    /// world direction `d`: a direction along which a flat face's slab is
+    /// measured exactly, where a closest direction computed from nearly
+    /// touching points is off by their rounding over their distance (`f32`
+    /// at `1e-4`: a thousandth of a radian, which a face a metre wide turns
+    /// into a millimetre). `None` for other cores. Any direction gives a
+    /// sound step (`proofs/12-shapes.md`, Lemma 12.1).
+    pub(crate) fn face_normal(&self, pose: &crate::Pose<T>, d: Vec3<T>) -> Option<Vec3<T>> {
+        if self.placed.is_some() || !matches!(self.core, Core::Cuboid { .. }) {
+            return None;
+        }
+        let local = pose.inverse_transform_vector(d).to_array();
+        let k = (0..3).fold(0, |k, j| {
+            if local[j].abs() > local[k].abs() {
+                j
+            } else {
+                k
+            }
+        });
+        let mut e = [T::ZERO; 3];
+        e[k] = if local[k] < T::ZERO { -T::ONE } else { T::ONE };
+        Some(pose.transform_vector(Vec3::from_array(e)))
+    }
+
+    /// For a core symmetric about its frame's `y` axis and not placed in
+    /// the body frame (a segment, cylinder or cone: a capsule, cylinder or
+    /// cone, rounded or not), an upper bound of the distance from the axis
+    /// point `(0, y, 0)` to every point of the core:
+    /// `sqrt((h + |y|)^2 + rho_c^2)`, rounded up (`proofs/12-shapes.md`,
+    /// Lemma 12.5). `None` for other cores, and for a placed core (its
+    /// stored matrix is a rotation only to within rounding, so the stored
+    /// set is not exactly symmetric).
+    pub(crate) fn axial_reach(&self, y: T) -> Option<T> {
+        if self.placed.is_some() {
+            return None;
+        }
+        let (h, rho) = match self.core {
+            Core::Segment { half_height } => (half_height, T::ZERO),
+            Core::Cylinder {
+                half_height,
+                radius,
+            }
+            | Core::Cone {
+                half_height,
+                radius,
+            } => (half_height, radius),
+            _ => return None,
+        };
+        let a = sum_up(h, y.abs());
+        Some(radius_up(a * a + rho * rho))
+    }
+
     /// The points whose balls cover the core for the directed bounds
     /// (`proofs/12-shapes.md`, "Bounds"): up to two groups, each a list of
     /// body points (exact floats) and a radius that, added to each point,

@@ -162,12 +162,13 @@ impl<T: Float> Side<'_, '_, T> {
             - self.shape.radius()
     }
 
-    /// B's closing bound along `-n` (one-sided) or speed along `n`.
+    /// B's closing bound along `-n` (one-sided) or speed along `n`: its
+    /// support's (Lemma 12.5).
     fn rate(&self, n: Direction<T>, kind: BoundKind, one_sided: bool) -> T {
         if one_sided {
-            self.motion.probe(-n).convex_rate(self.shape, kind)
+            self.motion.probe(-n).convex_support_rate(self.shape, kind)
         } else {
-            self.motion.probe(n).convex_speed(self.shape, kind)
+            self.motion.probe(n).convex_support_speed(self.shape, kind)
         }
     }
 }
@@ -522,6 +523,43 @@ impl<T: Float> MeshConvexPair<'_, T> {
             Point3::from_vec3(on_b),
         );
         let n = found.keep(w, None, dir.ok(), distance > cd)?;
+        let (mut step, mut g, mut mu, mut dir) =
+            self.leaf_step(pa, side, (li, corners), n, (kind, one_sided, clearance));
+        // Where the closest direction lost more than half the distance (a
+        // curved core nearly touching a large triangle in `f32`: the
+        // closest points' rounding over their distance), the triangle's
+        // normal too, turned towards B; the longer step is taken (both are
+        // safe, Lemma 9.1 for any direction).
+        if side.fixed.is_none() && g < (distance - clearance) * T::HALF {
+            let normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]);
+            let normal = if normal.dot(on_b - on_a) < T::ZERO {
+                -normal
+            } else {
+                normal
+            };
+            if let Ok(m) = Direction::try_new(normal) {
+                let other =
+                    self.leaf_step(pa, side, (li, corners), m, (kind, one_sided, clearance));
+                if other.0 > step {
+                    (step, g, mu, dir) = other;
+                }
+            }
+        }
+        found.fold(step, dir, best);
+        Some((step, g, mu))
+    }
+
+    /// A leaf's certified gap along `n` (the slab from its placed `corners`
+    /// to B's support), its closing bounds, and the step: `(step, gap, mu, n)`.
+    fn leaf_step(
+        &mut self,
+        pa: &Placed<'_, T>,
+        side: &Side<'_, '_, T>,
+        (li, corners): (usize, [Vec3<T>; 3]),
+        n: Direction<T>,
+        (kind, one_sided, clearance): (BoundKind, bool, T),
+    ) -> (T, T, T, Direction<T>) {
+        let leaf = &self.mesh.leaves[li];
         let nv = n.get();
         let upper = corners[0]
             .dot(nv)
@@ -540,8 +578,6 @@ impl<T: Float> MeshConvexPair<'_, T> {
             pa.leaf_speed(leaf, n, kind)
         };
         let mu_b = side.rate(n, kind, one_sided);
-        let step = step_down(g, clearance, mu_a, mu_b);
-        found.fold(step, n, best);
-        Some((step, g, mu_a + mu_b))
+        (step_down(g, clearance, mu_a, mu_b), g, mu_a + mu_b, n)
     }
 }
