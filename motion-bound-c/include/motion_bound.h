@@ -79,7 +79,73 @@ typedef enum mb_status {
    * A bug in this library (a Rust panic, caught at the boundary).
    */
   MB_STATUS_INTERNAL_ERROR = 9,
+  /**
+   * A URDF the library cannot use: unreadable or malformed, an
+   * unsupported joint kind or mesh format, links and joints that do not
+   * form one tree (`mb_chain_from_urdf_*`).
+   */
+  MB_STATUS_INVALID_URDF = 10,
+  /**
+   * A name that is not a link's (`mb_chain_*`).
+   */
+  MB_STATUS_UNKNOWN_NAME = 11,
 } mb_status;
+
+/**
+ * What an edge query ended with (`mb_edge_report.outcome`).
+ */
+typedef enum mb_edge_outcome {
+  /**
+   * The whole edge is certified free.
+   */
+  MB_EDGE_OUTCOME_FREE = 0,
+  /**
+   * Free on `[0, free_until]`; the pair within the contact distance plus
+   * the padding at `at`, never later than the first touch.
+   */
+  MB_EDGE_OUTCOME_CONTACT = 1,
+  /**
+   * The edge budget ran out: free on `[0, free_until]`.
+   */
+  MB_EDGE_OUTCOME_UNDECIDED = 2,
+} mb_edge_outcome;
+
+/**
+ * What a chain query's pair is (`mb_chain_pair.kind`).
+ */
+typedef enum mb_chain_pair_kind {
+  /**
+   * No pair (nothing checked, or a free answer).
+   */
+  MB_CHAIN_PAIR_KIND_NONE = 0,
+  /**
+   * Link `a` and obstacle `b` (the index `mb_chain_scene_add_*` returned).
+   */
+  MB_CHAIN_PAIR_KIND_OBSTACLE = 1,
+  /**
+   * Links `a < b` of the chain.
+   */
+  MB_CHAIN_PAIR_KIND_SELF_COLLISION = 2,
+} mb_chain_pair_kind;
+
+/**
+ * What a segment query ended with (`mb_segment_report.outcome`).
+ */
+typedef enum mb_segment_outcome {
+  /**
+   * No checked pair comes within the contact distance.
+   */
+  MB_SEGMENT_OUTCOME_SEPARATED = 0,
+  /**
+   * The first contact: its time, pair and witnesses.
+   */
+  MB_SEGMENT_OUTCOME_CONTACT = 1,
+  /**
+   * A pair ran out of iterations: the segment is certified free up to
+   * `time`.
+   */
+  MB_SEGMENT_OUTCOME_ITERATION_LIMIT = 2,
+} mb_segment_outcome;
 
 /**
  * What ended a query (`mb_report.outcome`).
@@ -234,6 +300,23 @@ typedef enum mb_witness_search {
 } mb_witness_search;
 
 /**
+ * A kinematic tree read from a URDF: its links' collision meshes (each
+ * with its ball tree, built once) and its revolute, continuous, prismatic
+ * and fixed joints. Opaque; made by `mb_chain_from_urdf_file` or
+ * `mb_chain_from_urdf_string`, freed by `mb_chain_free`; immutable.
+ */
+typedef struct mb_chain mb_chain;
+
+/**
+ * A chain in still surroundings: what a planner's motion validator asks
+ * about. Opaque; made by `mb_chain_scene_new` (which copies the chain),
+ * grown by `mb_chain_scene_add_obstacle` and `mb_chain_scene_add_points`,
+ * its unchecked pairs set by `mb_chain_scene_allow_collision` and
+ * `mb_chain_scene_allow_collisions_at`, freed by `mb_chain_scene_free`.
+ */
+typedef struct mb_chain_scene mb_chain_scene;
+
+/**
  * A rigid motion over `[0, duration]`: constant linear and angular
  * velocity (a screw motion), the exact motion the queries bound. Opaque;
  * made by `mb_motion_*`, freed by `mb_motion_free`; immutable.
@@ -264,6 +347,39 @@ typedef struct mb_scene_result mb_scene_result;
  * it needs, so a shape may be freed once it has been passed to them.
  */
 typedef struct mb_shape mb_shape;
+
+/**
+ * A chain scene's parameters, a plain struct: start from
+ * `mb_chain_params_default` and change fields; checked by
+ * `mb_chain_scene_set_params` (`MB_STATUS_INVALID_PARAMETER`).
+ */
+typedef struct mb_chain_params {
+  /**
+   * Surfaces this close count as touching in `mb_chain_scene_check_segment`
+   * (world units, positive and finite; default `1e-3`).
+   */
+  double contact_distance;
+  /**
+   * What the edge queries keep between the links and everything else
+   * (world units, finite, at least `0`; default `0`: exact).
+   */
+  double padding;
+  /**
+   * The most items an edge query tests before it answers
+   * `MB_EDGE_OUTCOME_UNDECIDED` (at least `1`; default 250,000).
+   */
+  uint64_t edge_budget;
+  /**
+   * Iterations per pair of `mb_chain_scene_check_segment` (at least `1`;
+   * default 10,000).
+   */
+  uint64_t max_iterations;
+  /**
+   * Nonzero (the default): the ends of edges and segments must be within
+   * the joints' limits (`MB_STATUS_INVALID_INPUT` otherwise).
+   */
+  uint32_t within_limits;
+} mb_chain_params;
 
 /**
  * A vector or point `(x, y, z)`.
@@ -321,6 +437,119 @@ typedef struct mb_pose {
    */
   struct mb_quat rotation;
 } mb_pose;
+
+/**
+ * A pair of a chain query's answer.
+ */
+typedef struct mb_chain_pair {
+  /**
+   * What the pair is.
+   */
+  enum mb_chain_pair_kind kind;
+  /**
+   * A link's index (`mb_chain_link_name` names it).
+   */
+  size_t a;
+  /**
+   * An obstacle's index or a second link's index, by `kind`.
+   */
+  size_t b;
+} mb_chain_pair;
+
+/**
+ * The answer of `mb_chain_scene_check_edge`.
+ */
+typedef struct mb_edge_report {
+  /**
+   * What the query ended with.
+   */
+  enum mb_edge_outcome outcome;
+  /**
+   * The edge is certified free on `[0, free_until]` (`1` when free).
+   */
+  double free_until;
+  /**
+   * The contact's time (NaN unless a contact).
+   */
+  double at;
+  /**
+   * The pair in contact (`MB_CHAIN_PAIR_KIND_NONE` unless a contact).
+   */
+  struct mb_chain_pair pair;
+  /**
+   * Items tested.
+   */
+  uint64_t tests;
+  /**
+   * Of them, leaf items (triangles, points).
+   */
+  uint64_t leaf_tests;
+  /**
+   * Time intervals examined.
+   */
+  uint64_t intervals;
+} mb_edge_report;
+
+/**
+ * The answer of `mb_chain_scene_check_segment`.
+ */
+typedef struct mb_segment_report {
+  /**
+   * What the query ended with.
+   */
+  enum mb_segment_outcome outcome;
+  /**
+   * The contact's time (never later than the first touch), or the time
+   * up to which the segment is free for an iteration limit; NaN when
+   * separated.
+   */
+  double time;
+  /**
+   * The pair (`MB_CHAIN_PAIR_KIND_NONE` when separated).
+   */
+  struct mb_chain_pair pair;
+  /**
+   * The witnesses' distance at `time` (NaN unless a contact).
+   */
+  double distance;
+  /**
+   * The witness on the pair's first member (world coordinates at
+   * `time`; NaN unless a contact).
+   */
+  struct mb_vec3 point_a;
+  /**
+   * The witness on the second member.
+   */
+  struct mb_vec3 point_b;
+  /**
+   * Pairs considered.
+   */
+  uint64_t pairs;
+  /**
+   * Pairs never checked (adjacent or allowed).
+   */
+  uint64_t excluded;
+  /**
+   * Pairs the broad phase ruled out.
+   */
+  uint64_t culled;
+  /**
+   * Pairs advanced.
+   */
+  uint64_t advanced;
+  /**
+   * Iterations of conservative advancement.
+   */
+  uint64_t iterations;
+  /**
+   * Node pairs visited.
+   */
+  uint64_t node_pairs;
+  /**
+   * Triangle pairs measured.
+   */
+  uint64_t leaf_pairs;
+} mb_segment_report;
 
 /**
  * The parameters of a query, a plain struct: start from
@@ -452,6 +681,394 @@ typedef struct mb_scene_pair {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * The chain of the URDF file at `path` (NUL-terminated, UTF-8): each
+ * link's collision elements (OBJ and STL meshes; boxes exactly; cylinders,
+ * spheres and capsules as meshes that contain them) merged into one mesh.
+ * `package://NAME/...` mesh paths are looked up under `package_root`
+ * (`NULL` for none) first, then beside the URDF; plain relative paths are
+ * relative to the URDF's folder. Written to `*out`.
+ *
+ * `MB_STATUS_INVALID_URDF` for a file that cannot be read or parsed, an
+ * unsupported joint kind or mesh format, a mesh file that cannot be read,
+ * or links and joints that do not form one tree.
+ *
+ * **Thread safety**: any thread.
+ *
+ * # Safety
+ * `path` and `package_root` are `NULL` or NUL-terminated strings; `out` is
+ * `NULL` or valid for writing a pointer.
+ */
+enum mb_status mb_chain_from_urdf_file(const char *path,
+                                       const char *package_root,
+                                       struct mb_chain **out);
+
+/**
+ * The chain of URDF `text` (NUL-terminated, UTF-8), its relative mesh
+ * paths resolved against the folder `mesh_dir` (`NULL`: the current
+ * folder) and `package://` paths under `package_root` first (`NULL`: none),
+ * as `mb_chain_from_urdf_file`. Written to `*out`.
+ *
+ * **Thread safety**: any thread.
+ *
+ * # Safety
+ * The strings are `NULL` or NUL-terminated; `out` is `NULL` or valid for
+ * writing a pointer.
+ */
+enum mb_status mb_chain_from_urdf_string(const char *text,
+                                         const char *mesh_dir,
+                                         const char *package_root,
+                                         struct mb_chain **out);
+
+/**
+ * Frees a chain (nothing for `NULL`). Scenes made from it keep their own
+ * copy.
+ *
+ * **Thread safety**: no other thread may use `chain`.
+ *
+ * # Safety
+ * `chain` is not used by another thread during or after the call.
+ */
+enum mb_status mb_chain_free(struct mb_chain *chain);
+
+/**
+ * The chain's number of joint coordinates (its movable joints), written
+ * to `*out`: the `dof` every query takes.
+ *
+ * **Thread safety**: any thread.
+ *
+ * # Safety
+ * `chain` is not freed during the call; `out` is `NULL` or valid for
+ * writing a `size_t`.
+ */
+enum mb_status mb_chain_dof(const struct mb_chain *chain, size_t *out);
+
+/**
+ * The chain's number of links, written to `*out`.
+ *
+ * **Thread safety**: any thread.
+ *
+ * # Safety
+ * As `mb_chain_dof`.
+ */
+enum mb_status mb_chain_link_count(const struct mb_chain *chain, size_t *out);
+
+/**
+ * The index of the link named `name`, written to `*out`;
+ * `MB_STATUS_UNKNOWN_NAME` when no link has that name.
+ *
+ * **Thread safety**: any thread.
+ *
+ * # Safety
+ * `chain` is not freed during the call; `name` is `NULL` or
+ * NUL-terminated; `out` is `NULL` or valid for writing a `size_t`.
+ */
+enum mb_status mb_chain_link_index(const struct mb_chain *chain, const char *name, size_t *out);
+
+/**
+ * The name of link `index`, written to `*out` as a NUL-terminated string
+ * owned by the chain (valid until it is freed); `MB_STATUS_OUT_OF_RANGE`
+ * for an index past the end.
+ *
+ * **Thread safety**: any thread.
+ *
+ * # Safety
+ * `chain` is not freed during the call; `out` is `NULL` or valid for
+ * writing a pointer.
+ */
+enum mb_status mb_chain_link_name(const struct mb_chain *chain, size_t index, const char **out);
+
+/**
+ * The joints' limits, coordinate by coordinate: `lower[i]` and `upper[i]`
+ * for `i < dof` (`dof` must be the chain's); `-INFINITY` and `INFINITY`
+ * for a coordinate without limits (a continuous joint).
+ *
+ * **Thread safety**: any thread.
+ *
+ * # Safety
+ * `chain` is not freed during the call; `lower` and `upper` are `NULL` or
+ * valid for writing `dof` doubles.
+ */
+enum mb_status mb_chain_limits(const struct mb_chain *chain,
+                               double *lower,
+                               double *upper,
+                               size_t dof);
+
+/**
+ * A scene of a copy of `chain` alone, with the default parameters,
+ * written to `*out`. Pairs of adjacent links (joined by one movable
+ * joint, or rigidly through fixed joints) are never checked.
+ *
+ * **Thread safety**: any thread.
+ *
+ * # Safety
+ * `chain` is not freed during the call; `out` is `NULL` or valid for
+ * writing a pointer.
+ */
+enum mb_status mb_chain_scene_new(const struct mb_chain *chain, struct mb_chain_scene **out);
+
+/**
+ * Frees a chain scene (nothing for `NULL`).
+ *
+ * **Thread safety**: no other thread may use `scene`.
+ *
+ * # Safety
+ * `scene` is not used by another thread during or after the call.
+ */
+enum mb_status mb_chain_scene_free(struct mb_chain_scene *scene);
+
+/**
+ * The default parameters (`contact_distance` 1e-3, `padding` 0,
+ * `edge_budget` 250,000, `max_iterations` 10,000, `within_limits` 1).
+ *
+ * **Thread safety**: any thread, any time.
+ */
+struct mb_chain_params mb_chain_params_default(void);
+
+/**
+ * Sets the scene's parameters (`NULL`: the defaults);
+ * `MB_STATUS_INVALID_PARAMETER` naming the field out of range.
+ *
+ * **Thread safety**: no other thread may use `scene` during the call.
+ *
+ * # Safety
+ * `scene` is not used by another thread during the call; `params` is
+ * `NULL` or valid for reading an `mb_chain_params`.
+ */
+enum mb_status mb_chain_scene_set_params(struct mb_chain_scene *scene,
+                                         const struct mb_chain_params *params);
+
+/**
+ * Adds `shape` still at `pose` as an obstacle named `name` (`NULL`:
+ * `"obstacle<i>"`) and writes its obstacle index to `*out_index` (`NULL`
+ * to skip). Balls, capsules, cuboids, cylinders, cones (rounded or not)
+ * and half-spaces are measured exactly (never meshed); a mesh is its
+ * triangles. `MB_STATUS_QUERY_ERROR` for a convex hull (give it as a mesh)
+ * or a compound (add its parts one by one). The scene copies what it needs:
+ * the shape may be freed after.
+ *
+ * **Thread safety**: no other thread may use `scene` during the call.
+ *
+ * # Safety
+ * The handles are not freed during the call and `scene` is not used by
+ * another thread; `name` is `NULL` or NUL-terminated; `out_index` is
+ * `NULL` or valid for writing a `size_t`.
+ */
+enum mb_status mb_chain_scene_add_obstacle(struct mb_chain_scene *scene,
+                                           const struct mb_shape *shape,
+                                           struct mb_pose pose,
+                                           const char *name,
+                                           size_t *out_index);
+
+/**
+ * Adds a point cloud: a ball of `radius` (at least 0) about each of the
+ * `count` points (world coordinates; a depth camera's points with its
+ * noise as the radius), measured exactly, named `name` (`NULL`:
+ * `"obstacle<i>"`); writes its obstacle index to `*out_index` (`NULL` to
+ * skip).
+ *
+ * **Thread safety**: no other thread may use `scene` during the call.
+ *
+ * # Safety
+ * `scene` is not freed or used by another thread during the call;
+ * `points` is `NULL` or valid for reading `count` `mb_vec3`; `name` is
+ * `NULL` or NUL-terminated; `out_index` is `NULL` or valid for writing a
+ * `size_t`.
+ */
+enum mb_status mb_chain_scene_add_points(struct mb_chain_scene *scene,
+                                         const struct mb_vec3 *points,
+                                         size_t count,
+                                         double radius,
+                                         const char *name,
+                                         size_t *out_index);
+
+/**
+ * Never checks links `link_a` and `link_b` (by name) against each other,
+ * as an SRDF's `disable_collisions` lists them; `MB_STATUS_UNKNOWN_NAME`
+ * naming the argument for a name that is not a link's.
+ *
+ * **Thread safety**: no other thread may use `scene` during the call.
+ *
+ * # Safety
+ * `scene` is not freed or used by another thread during the call; the
+ * names are `NULL` or NUL-terminated.
+ */
+enum mb_status mb_chain_scene_allow_collision(struct mb_chain_scene *scene,
+                                              const char *link_a,
+                                              const char *link_b);
+
+/**
+ * Never checks again the pairs of links whose surfaces are within
+ * `distance` (at least 0) at configuration `q` (an SRDF's pairs in
+ * collision by default, fingers closed on each other); writes how many
+ * pairs that allowed to `*out_count` (`NULL` to skip). Call it before
+ * adding shape obstacles or point clouds (`MB_STATUS_QUERY_ERROR` after).
+ *
+ * **Thread safety**: no other thread may use `scene` during the call.
+ *
+ * # Safety
+ * `scene` is not freed or used by another thread during the call; `q` is
+ * `NULL` or valid for reading `dof` doubles; `out_count` is `NULL` or valid
+ * for writing a `size_t`.
+ */
+enum mb_status mb_chain_scene_allow_collisions_at(struct mb_chain_scene *scene,
+                                                  const double *q,
+                                                  size_t dof,
+                                                  double distance,
+                                                  size_t *out_count);
+
+/**
+ * Whether the scene checks links `link_a` and `link_b` (by name) against
+ * each other, written to `*out` (`1` or `0`): `0` for a link without
+ * geometry, a link with itself, adjacent links and allowed pairs.
+ *
+ * **Thread safety**: any thread, unless another changes `scene`.
+ *
+ * # Safety
+ * `scene` is not freed or changed during the call; the names are `NULL`
+ * or NUL-terminated; `out` is `NULL` or valid for writing a `uint8_t`.
+ */
+enum mb_status mb_chain_scene_checks_pair(const struct mb_chain_scene *scene,
+                                          const char *link_a,
+                                          const char *link_b,
+                                          uint8_t *out);
+
+/**
+ * The name of the scene's link `index` (as `mb_chain_link_name`), owned by
+ * the scene.
+ *
+ * **Thread safety**: any thread.
+ *
+ * # Safety
+ * `scene` is not freed during the call; `out` is `NULL` or valid for
+ * writing a pointer.
+ */
+enum mb_status mb_chain_scene_link_name(const struct mb_chain_scene *scene,
+                                        size_t index,
+                                        const char **out);
+
+/**
+ * Whether the joint-space edge `q0 -> q1` (`q(t) = q0 + t (q1 - q0)`,
+ * `t` in `[0, 1]`; `dof` coordinates each) is certified free of every
+ * obstacle and checked link pair, with the padding to spare, written to
+ * `*out` (`1` free, `0` a contact or an exhausted budget): a planner's
+ * motion validator. `MB_STATUS_INVALID_SIZE` for a `dof` other than the
+ * chain's; `MB_STATUS_INVALID_INPUT` naming `q0[i]` or `q1[i]` for a NaN,
+ * infinite or (with `within_limits`) out-of-limit coordinate.
+ *
+ * **Thread safety**: any number of threads may query one scene at once,
+ * unless another changes it.
+ *
+ * # Safety
+ * `scene` is not freed or changed during the call; `q0` and `q1` are
+ * `NULL` or valid for reading `dof` doubles; `out` is `NULL` or valid for
+ * writing a `uint8_t`.
+ */
+enum mb_status mb_chain_scene_edge_is_free(const struct mb_chain_scene *scene,
+                                           const double *q0,
+                                           const double *q1,
+                                           size_t dof,
+                                           uint8_t *out);
+
+/**
+ * `mb_chain_scene_edge_is_free` of `count` edges at once, on `threads`
+ * threads (`0`: one per core): `edges` holds `count * 2 * dof` doubles,
+ * edge `i` from `edges[(2 i) dof ..]` to `edges[(2 i + 1) dof ..]`;
+ * `out[i]` is `1` when edge `i` is certified free, the same answer as one
+ * `mb_chain_scene_edge_is_free` per edge. Every end is checked first
+ * (messages name it: `edges[3][1][2] is not finite (got nan)`); on a
+ * failure nothing is written.
+ *
+ * **Thread safety**: as `mb_chain_scene_edge_is_free`; the call itself
+ * runs threads of its own and returns when they are done.
+ *
+ * # Safety
+ * `scene` is not freed or changed during the call; `edges` is `NULL` or
+ * valid for reading `count * 2 * dof` doubles; `out` is `NULL` or valid for
+ * writing `count` bytes.
+ */
+enum mb_status mb_chain_scene_edges_are_free(const struct mb_chain_scene *scene,
+                                             const double *edges,
+                                             size_t count,
+                                             size_t dof,
+                                             size_t threads,
+                                             uint8_t *out);
+
+/**
+ * The edge query's full answer for `q0 -> q1` (as
+ * `mb_chain_scene_edge_is_free`), written to `*out`: free, a contact (free
+ * up to `free_until`, the pair touching at `at`, never later than the
+ * first touch) or undecided (the edge budget ran out), and the work done.
+ *
+ * **Thread safety**: as `mb_chain_scene_edge_is_free`.
+ *
+ * # Safety
+ * As `mb_chain_scene_edge_is_free`, `out` valid for writing an
+ * `mb_edge_report`.
+ */
+enum mb_status mb_chain_scene_check_edge(const struct mb_chain_scene *scene,
+                                         const double *q0,
+                                         const double *q1,
+                                         size_t dof,
+                                         struct mb_edge_report *out);
+
+/**
+ * The first contact along the joint-space segment `q0 -> q1` (mesh
+ * obstacles only: `MB_STATUS_QUERY_ERROR` in a scene with shapes or point
+ * clouds), written to `*out`: its time (never later than the first touch),
+ * pair and witnesses; separated; or an iteration limit.
+ *
+ * **Thread safety**: as `mb_chain_scene_edge_is_free`.
+ *
+ * # Safety
+ * As `mb_chain_scene_edge_is_free`, `out` valid for writing an
+ * `mb_segment_report`.
+ */
+enum mb_status mb_chain_scene_check_segment(const struct mb_chain_scene *scene,
+                                            const double *q0,
+                                            const double *q1,
+                                            size_t dof,
+                                            struct mb_segment_report *out);
+
+/**
+ * Whether some checked pair's surfaces meet at configuration `q`
+ * (computed distance at most the padding), against meshes, shapes and
+ * point clouds, written to `*out` (`1` or `0`): the static check a
+ * sampling motion validator runs. `q` must be finite; the limits are not
+ * checked.
+ *
+ * **Thread safety**: as `mb_chain_scene_edge_is_free`.
+ *
+ * # Safety
+ * `scene` is not freed or changed during the call; `q` is `NULL` or valid
+ * for reading `dof` doubles; `out` is `NULL` or valid for writing a
+ * `uint8_t`.
+ */
+enum mb_status mb_chain_scene_collides_at(const struct mb_chain_scene *scene,
+                                          const double *q,
+                                          size_t dof,
+                                          uint8_t *out);
+
+/**
+ * A certified lower bound of the smallest distance over the checked pairs
+ * at configuration `q` (`<= 0` for touching or overlapping surfaces, up to
+ * rounding; `INFINITY` when nothing is checked), written to `*out_distance`,
+ * and the pair attaining it to `*out_pair` (`NULL` to skip). Mesh
+ * obstacles only (`MB_STATUS_QUERY_ERROR` in a scene with shapes or point
+ * clouds).
+ *
+ * **Thread safety**: as `mb_chain_scene_edge_is_free`.
+ *
+ * # Safety
+ * As `mb_chain_scene_collides_at`; `out_distance` is `NULL` or valid for
+ * writing a double, `out_pair` for an `mb_chain_pair`.
+ */
+enum mb_status mb_chain_scene_clearance(const struct mb_chain_scene *scene,
+                                        const double *q,
+                                        size_t dof,
+                                        double *out_distance,
+                                        struct mb_chain_pair *out_pair);
 
 /**
  * The message of the last call on this thread that failed, as a

@@ -39,6 +39,12 @@ pub enum MbStatus {
     OutOfRange = 8,
     /// A bug in this library (a Rust panic, caught at the boundary).
     InternalError = 9,
+    /// A URDF the library cannot use: unreadable or malformed, an
+    /// unsupported joint kind or mesh format, links and joints that do not
+    /// form one tree (`mb_chain_from_urdf_*`).
+    InvalidUrdf = 10,
+    /// A name that is not a link's (`mb_chain_*`).
+    UnknownName = 11,
 }
 
 /// A failure: its status and message.

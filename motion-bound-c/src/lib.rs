@@ -33,6 +33,7 @@
 #![deny(clippy::undocumented_unsafe_blocks)]
 #![warn(missing_docs)]
 
+mod chain;
 mod error;
 mod motion;
 mod ptr;
@@ -40,6 +41,17 @@ mod query;
 mod scene;
 mod shape;
 
+pub use chain::{
+    mb_chain_dof, mb_chain_free, mb_chain_from_urdf_file, mb_chain_from_urdf_string,
+    mb_chain_limits, mb_chain_link_count, mb_chain_link_index, mb_chain_link_name,
+    mb_chain_params_default, mb_chain_scene_add_obstacle, mb_chain_scene_add_points,
+    mb_chain_scene_allow_collision, mb_chain_scene_allow_collisions_at, mb_chain_scene_check_edge,
+    mb_chain_scene_check_segment, mb_chain_scene_checks_pair, mb_chain_scene_clearance,
+    mb_chain_scene_collides_at, mb_chain_scene_edge_is_free, mb_chain_scene_edges_are_free,
+    mb_chain_scene_free, mb_chain_scene_link_name, mb_chain_scene_new, mb_chain_scene_set_params,
+    MbChain, MbChainPair, MbChainPairKind, MbChainParams, MbChainScene, MbEdgeOutcome,
+    MbEdgeReport, MbSegmentOutcome, MbSegmentReport,
+};
 pub use error::{mb_last_error_message, mb_version, MbStatus};
 pub use motion::{
     mb_motion_about_centre, mb_motion_between, mb_motion_between_about, mb_motion_free,

@@ -20,6 +20,8 @@ pub(crate) enum Kind {
     Motion,
     Scene,
     SceneResult,
+    Chain,
+    ChainScene,
 }
 
 /// A type given out to C as an opaque handle (`Box::into_raw`).

@@ -39,7 +39,7 @@ impl Hull {
 /// A triangle mesh and its tree.
 #[derive(Debug)]
 pub(crate) struct MeshData {
-    mesh: TriMesh<f64>,
+    pub(crate) mesh: TriMesh<f64>,
     tree: BallTree<f64>,
 }
 

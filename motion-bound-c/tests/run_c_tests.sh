@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds motion-bound-c (debug), compiles tests/c/test_motion_bound.c against its static
 # library with AddressSanitizer and UndefinedBehaviorSanitizer, and runs it with
-# LeakSanitizer on: any sanitizer report, leak or failed check fails the script. Also checks
-# that the C test calls every function the header declares. Usage: tests/run_c_tests.sh
+# LeakSanitizer on, and tests/c/test_chain.c (chains) likewise: any sanitizer report, leak or
+# failed check fails the script. Also checks that the C tests call every function the header declares. Usage: tests/run_c_tests.sh
 # (from anywhere; CC overrides the compiler, default cc).
 set -euo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
@@ -16,7 +16,7 @@ test -f "$lib" || { echo "FAILED: no $lib"; exit 1; }
 # Every declared function is exercised by the C test.
 missing=$(grep -oE '^[a-z][a-z_ ]*[ *](mb_[a-z0-9_]+)\(' "$here/include/motion_bound.h" \
   | sed -E 's/.*(mb_[a-z0-9_]+)\(/\1/' | sort -u \
-  | while read -r f; do grep -q "\b$f(" "$here/tests/c/test_motion_bound.c" || echo "$f"; done)
+  | while read -r f; do grep -q "\b$f(" "$here"/tests/c/*.c || echo "$f"; done)
 if [ -n "$missing" ]; then echo "FAILED: the C test never calls: $missing"; exit 1; fi
 
 out="$(mktemp -d)"
@@ -28,6 +28,13 @@ trap 'rm -rf "$out"' EXIT
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
 "$out/test_motion_bound"
+
+# The chains (tests/c/test_chain.c), with the Panda read from data/.
+"${CC:-cc}" -std=c11 -D_DEFAULT_SOURCE -Wall -Wextra -Werror -pedantic \
+  -fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-omit-frame-pointer -g \
+  -DMB_DATA_DIR="\"$root/data\"" -I "$here/include" "$here/tests/c/test_chain.c" "$lib" \
+  -lpthread -ldl -lm -o "$out/test_chain"
+"$out/test_chain"
 
 # The README's example, as written there: it must build cleanly, run and print the closed-form
 # time (2 - 0.25) / 3 = 0.58333 (reported up to the contact distance over the speed earlier).
