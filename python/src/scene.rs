@@ -185,13 +185,7 @@ impl Scene {
     }
 
     /// Adds the pickled bodies and motions (as `add`) and restores the stats.
-    fn __setstate__(
-        &mut self,
-        state: (
-            Vec<(Bound<'_, Body>, Bound<'_, PyAny>)>,
-            Option<Bound<'_, PyDict>>,
-        ),
-    ) -> PyResult<()> {
+    fn __setstate__(&mut self, state: SceneState<'_>) -> PyResult<()> {
         let (bodies, stats) = state;
         for (body, motion) in bodies {
             self.add(body, &motion)?;
@@ -226,6 +220,12 @@ impl Scene {
         )
     }
 }
+
+/// A pickled scene's state: its bodies with their motions, and the last query's stats.
+type SceneState<'py> = (
+    Vec<(Bound<'py, Body>, Bound<'py, PyAny>)>,
+    Option<Bound<'py, PyDict>>,
+);
 
 /// A scene query's refusal, naming the body it is about where the crate's
 /// message does not: a half-space whose motion turns.
