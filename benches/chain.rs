@@ -32,7 +32,7 @@
 //!   the same sweep exactly. Per query.
 //!
 //! Criterion warns that ten samples do not fit its (short) target time:
-//! one iteration per sample is the point. `cargo bench --bench chain`;
+//! one iteration per sample is the point. `cargo bench --features urdf --bench chain`;
 //! about a minute and a half (the 50 segments about twice with each
 //! validator).
 

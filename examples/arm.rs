@@ -6,7 +6,7 @@
 //! and exact triangle distances, `tests/common/chain_truth.rs`).
 //!
 //! ```text
-//! cargo run --release --example arm [-- --segments 1000 --arm panda|kuka --seed 7]
+//! cargo run --release --features urdf --example arm [-- --segments 1000 --arm panda|kuka --seed 7]
 //! ```
 //!
 //! The last line: `segments S, colliding C, missed M, late L, mean ms per

@@ -9,7 +9,7 @@
 //! pair made inside the timed query, as a scene or the bindings make it;
 //! the trees built beforehand).
 //!
-//! Run with `cargo run --release --example coarse_fine` (`--queries N`,
+//! Run with `cargo run --release --features urdf --example coarse_fine` (`--queries N`,
 //! default 200; `--spin S`, default 4; `--seed S`; `--no-truth` for the
 //! work and times alone; `--only coarse|fine` for one board, e.g. under
 //! callgrind; `--piece L` builds the coarse board's pieces at length `L`,

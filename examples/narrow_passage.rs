@@ -19,7 +19,7 @@
 //! meshes.
 //!
 //! ```text
-//! cargo run --release --example narrow_passage [-- --segments 200 --seed 3 --scene opening|poles --first-contact N]
+//! cargo run --release --features urdf --example narrow_passage [-- --segments 200 --seed 3 --scene opening|poles --first-contact N]
 //! ```
 //!
 //! One line per variant: `S: segments N, colliding C, missed M, late L, mean

@@ -9,7 +9,7 @@
 //! sampling), so that a touch it finds is a touch of the real shapes.
 //!
 //! ```text
-//! cargo run --release --example planner_edges [-- --edges 10000 --truth 500 --seed 1 --write-edges DIR]
+//! cargo run --release --features urdf --example planner_edges [-- --edges 10000 --truth 500 --seed 1 --write-edges DIR]
 //! ```
 //!
 //! One line per scene: `scene S: edges N, colliding C, missed M, late L,
@@ -75,7 +75,10 @@ struct Scene {
 }
 
 fn load(name: &str) -> Result<Scene, Error> {
-    let path = format!("{}/data/mbm/{name}.json", env!("CARGO_MANIFEST_DIR"));
+    let path = format!(
+        "{}/data/mbm/{name}.json",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/..")
+    );
     let json: Value = serde_json::from_str(&std::fs::read_to_string(&path)?)?;
     let mut scene = Scene {
         shapes: Vec::new(),

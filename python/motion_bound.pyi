@@ -40,7 +40,8 @@ class UrdfError(MotionBoundError):
 
 class Body:
     """A shape in its own frame (a mesh with its ball tree, built once);
-    immutable, thread-safe, picklable."""
+    immutable, thread-safe, picklable. No `==`: bodies compare by identity
+    (compare `kind` and answers; a mesh's tree is not compared)."""
 
     @property
     def kind(
@@ -74,7 +75,10 @@ def from_trimesh(mesh: Any, solid: Optional[bool] = None) -> Body:
     z), each at its `primitive.transform` (a capsule, a cylinder or a placed
     primitive comes back as a one-part `compound`); a primitive is solid
     (`solid=False` is refused). Any other `trimesh.Trimesh`: its vertices and
-    faces, `solid` as for `mesh`."""
+    faces, `solid` as for `mesh`. A `trimesh.Scene` (what `trimesh.load`
+    returns for many GLB and OBJ files): one mesh of all its meshes, each
+    placed by the scene graph (`scene.to_mesh()`); a scene without triangles
+    is a `ValueError` naming `force="mesh"`."""
 
 def ball(radius: float) -> Body:
     """A ball of `radius` (finite, at least 0) at the body origin."""
@@ -118,9 +122,12 @@ class Pose:
     block R is a rotation to within 1e-6 (every entry of R^T R - I at most 1e-6,
     det R > 0), else `InputError`; `Pose(matrix, orthonormalize=True)` first
     replaces R by the nearest rotation (see `orthonormalize`). `Pose()` is the
-    identity."""
+    identity. Equal (and hashing alike) when the matrices are, entry by entry:
+    `Pose() == Pose(numpy.eye(4))`. Pickles."""
 
     def __init__(self, matrix: Optional[ArrayLike] = None, orthonormalize: bool = False) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
     @staticmethod
     def from_wxyz(quaternion: ArrayLike, translation: Optional[ArrayLike] = None) -> Pose: ...
     @staticmethod
@@ -137,11 +144,14 @@ class Pose:
 class Motion:
     """A rigid motion over [0, duration]: the start pose, a constant linear
     velocity of the body origin, a constant angular velocity about it (world
-    vectors, radians per unit time)."""
+    vectors, radians per unit time). Equal (and hashing alike) when the same
+    motion bit for bit: start pose, velocities, interval. Pickles."""
 
     def __init__(
         self, start: PoseLike, linear: ArrayLike, angular: ArrayLike, duration: float = 1.0
     ) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
+    def __hash__(self) -> int: ...
     @staticmethod
     def between(start: PoseLike, end: PoseLike, duration: float = 1.0) -> Motion: ...
     @staticmethod
@@ -175,7 +185,7 @@ class MotionBatch:
     def __getitem__(self, i: int) -> Motion: ...
 
 class Report:
-    """One query's answer."""
+    """One query's answer. Equal when every field is, bit for bit. Pickles."""
 
     def __init__(
         self,
@@ -210,7 +220,8 @@ class Report:
     def iterations(self) -> int: ...
 
 class BatchReport:
-    """A batch's answers as arrays, one entry per query."""
+    """A batch's answers as arrays, one entry per query. Equal when every
+    query's report is. Pickles."""
 
     OUTCOMES: list[str]
     def __init__(
@@ -272,7 +283,8 @@ def time_of_impact_batch(
 
 class Scene:
     """Many bodies over [0, duration]; every pair's first contact after a
-    certified broad phase."""
+    certified broad phase. Pickles (bodies, motions, the last `stats`); no
+    `==` (compare `query()` results)."""
 
     def __init__(self, duration: float = 1.0) -> None: ...
     def add(self, body: Body, motion: Union[Motion, PoseLike]) -> int: ...
@@ -327,8 +339,20 @@ class Chain:
 class EdgeReport:
     """`ChainScene.check_edge`'s answer: free (certified), a contact (free on
     `[0, free_until]`, the pair within the contact distance plus the padding at
-    `at`), or undecided (the edge budget ran out)."""
+    `at`), or undecided (the edge budget ran out). Equal when every field is.
+    Pickles."""
 
+    def __init__(
+        self,
+        outcome: Literal["free", "contact", "undecided"],
+        free_until: float,
+        at: Optional[float],
+        pair: Optional[Tuple[str, str]],
+        pair_kind: Optional[Literal["obstacle", "self"]],
+        pair_indices: Optional[Tuple[int, int]],
+        stats: dict[str, int],
+    ) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
     @property
     def outcome(self) -> Literal["free", "contact", "undecided"]: ...
     @property
@@ -348,8 +372,23 @@ class EdgeReport:
 
 class SegmentReport:
     """`ChainScene.check_segment` and `check_path`'s answer: the first contact
-    (never later than the first touch), separated, or an iteration limit."""
+    (never later than the first touch), separated, or an iteration limit.
+    Equal when every field is. Pickles."""
 
+    def __init__(
+        self,
+        outcome: Literal["contact", "separated", "iteration_limit"],
+        time: Optional[float],
+        pair: Optional[Tuple[str, str]],
+        pair_kind: Optional[Literal["obstacle", "self"]],
+        pair_indices: Optional[Tuple[int, int]],
+        distance: Optional[float],
+        point_a: Optional[ArrayLike],
+        point_b: Optional[ArrayLike],
+        segment: Optional[int],
+        stats: dict[str, int],
+    ) -> None: ...
+    def __eq__(self, other: object) -> bool: ...
     @property
     def outcome(self) -> Literal["contact", "separated", "iteration_limit"]: ...
     @property

@@ -3,7 +3,7 @@
 //! forward kinematics, sphere trees and exact triangle distances, dense
 //! sampling with a crude speed bound), the URDF loader, and bad input.
 //!
-//! `CHAIN_SEGMENTS=200 cargo test --release --test chain -- --nocapture`
+//! `CHAIN_SEGMENTS=200 cargo test --release --features urdf --test chain -- --nocapture`
 //! runs more segments.
 
 #[path = "common/arm_scene.rs"]
@@ -347,7 +347,7 @@ fn self_collision_counts_only_the_joints_below_the_common_ancestor() {
 
 #[test]
 fn urdf_arms_load_with_their_joints_and_meshes() {
-    let root = env!("CARGO_MANIFEST_DIR");
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
     let panda = Chain::<f64>::from_urdf_file(format!("{root}/data/arms/franka_panda/panda.urdf"))
         .expect("panda");
     assert_eq!((panda.dof(), panda.link_count()), (9, 13));
@@ -378,7 +378,7 @@ fn urdf_arms_load_with_their_joints_and_meshes() {
 
 #[test]
 fn urdf_errors_are_typed() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
     let opts = UrdfOptions::default();
     let with_mesh = |file: &str| {
         format!(
@@ -520,7 +520,7 @@ fn bad_chain_input_is_a_typed_error() {
 
 #[test]
 fn limits_are_typed_errors_and_segments_stay_within_them() {
-    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = std::path::Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/.."));
     let urdf = |lower: &str| {
         format!(
             r#"<robot name="r"><link name="a"/><link name="b"/><joint name="j" type="revolute"><parent link="a"/><child link="b"/><axis xyz="0 0 1"/><limit lower="{lower}" upper="1" effort="1" velocity="1"/></joint></robot>"#

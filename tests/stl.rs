@@ -226,7 +226,7 @@ fn bad_input_gives_typed_errors() {
 }
 
 fn shipped(path: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join(path)
+    PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/..")).join(path)
 }
 
 /// The KUKA iiwa's link 1 as shipped (`data/arms/kuka_iiwa/meshes/link_1.stl`,

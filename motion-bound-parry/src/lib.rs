@@ -15,7 +15,7 @@
 //!   whose `cast_shapes_nonlinear` is the certified one. Rapier asks it
 //!   only for cylinders, cones, half-spaces and custom shapes (it sweeps
 //!   balls, boxes, capsules and hulls itself, and never a moving mesh).
-//! - `rapier::CertifiedPass` (feature `rapier`): with rapier, run it around
+//! - [`rapier::CertifiedPass`] (feature `rapier`): with rapier, run it around
 //!   each step (`pass.step(&mut world)`), made with the dispatcher: it casts
 //!   every CCD body's actual motion over the step against everything it may
 //!   meet, plain shapes, nothing wrapped, and covers what rapier's CCD never
@@ -28,6 +28,17 @@
 //! `f64` (the default feature, `parry3d-f64`) is re-exported at the root;
 //! `f32` (`parry3d`) is the module `f32` (re-exported at the root when
 //! `f64` is off).
+//!
+// The pass's link: to the item when the feature is on (docs.rs builds every feature), to its
+// page on docs.rs otherwise, so that no build of these docs has a broken link.
+#![cfg_attr(
+    feature = "rapier",
+    doc = "[`rapier::CertifiedPass`]: crate::rapier::CertifiedPass"
+)]
+#![cfg_attr(
+    not(feature = "rapier"),
+    doc = "[`rapier::CertifiedPass`]: https://docs.rs/motion-bound-parry/latest/motion_bound_parry/rapier/struct.CertifiedPass.html"
+)]
 #![forbid(unsafe_code)]
 #![cfg_attr(docsrs, feature(doc_cfg))]
 

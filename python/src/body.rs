@@ -519,10 +519,15 @@ fn prefixed(py: Python<'_>, e: PyErr, what: &str) -> PyErr {
 /// Any other object with `vertices` and `faces` (a `trimesh.Trimesh`) is a
 /// triangle mesh, `solid` as for `mesh`: by default solid when the mesh is
 /// closed and outward-wound. A primitive is always solid: `solid=False` is
-/// refused for one.
+/// refused for one. A `trimesh.Scene` (what `trimesh.load` returns for many
+/// GLB and OBJ files) is one triangle mesh of all its meshes, each placed by
+/// the scene graph (`scene.to_mesh()`); a scene without triangles is refused.
 #[pyfunction]
 #[pyo3(signature = (mesh, solid = None))]
 fn from_trimesh(mesh: &Bound<'_, PyAny>, solid: Option<bool>) -> PyResult<Body> {
+    if let Some(m) = crate::trimesh_scene::scene_mesh(mesh)? {
+        return from_trimesh(&m, solid);
+    }
     if let Some(kind) = trimesh_primitive(mesh)? {
         if solid == Some(false) {
             return Err(PyValueError::new_err(format!(

@@ -23,7 +23,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList, PyTuple};
 use rayon::prelude::*;
 
-use crate::arrays::{floats, index, rows3, to_numpy};
+use crate::arrays::{floats, index, rows3, to_numpy, vec3};
 use crate::body::{Body, Data};
 use crate::errors::{InputError, MeshError, MotionBoundError, QueryError, UrdfError};
 use crate::motion::{pose_arg, Pose};
@@ -1128,6 +1128,66 @@ impl ChainScene {
     }
 }
 
+/// `value` as the one of `names` it equals (a report's outcome or pair kind, rebuilt), or an
+/// error naming `what` and the choices.
+fn one_of(value: &str, names: &[&'static str], what: &str) -> PyResult<&'static str> {
+    names.iter().copied().find(|n| *n == value).ok_or_else(|| {
+        PyValueError::new_err(format!(
+            "{what}: unknown value {value:?} (one of {})",
+            names.join(", ")
+        ))
+    })
+}
+
+/// A report's pair from its three fields, all given or all None.
+fn pair_of(
+    pair: Option<(String, String)>,
+    pair_kind: Option<&str>,
+    pair_indices: Option<(usize, usize)>,
+) -> PyResult<Option<PairInfo>> {
+    match (pair, pair_kind, pair_indices) {
+        (Some(names), Some(kind), Some((a, b))) => Ok(Some(PairInfo {
+            kind: one_of(kind, &["obstacle", "self", "unknown"], "pair_kind")?,
+            a,
+            b,
+            names,
+        })),
+        (None, None, None) => Ok(None),
+        _ => Err(PyValueError::new_err(
+            "pair, pair_kind, pair_indices: give all three or none",
+        )),
+    }
+}
+
+/// A report's counters from its `stats` dict, in the order of `keys`.
+fn stats_of<const N: usize>(
+    stats: &Bound<'_, PyDict>,
+    keys: [&'static str; N],
+) -> PyResult<[(&'static str, usize); N]> {
+    let mut out = [("", 0); N];
+    for (slot, key) in out.iter_mut().zip(keys) {
+        let v = stats
+            .get_item(key)?
+            .ok_or_else(|| PyKeyError::new_err(format!("stats: no {key:?}")))?;
+        *slot = (key, v.extract()?);
+    }
+    Ok(out)
+}
+
+/// The counters of an `EdgeReport`, in order.
+const EDGE_STATS: [&str; 3] = ["tests", "leaf_tests", "intervals"];
+
+/// The counters of a `SegmentReport`, in order.
+const SEGMENT_STATS: [&str; 7] = [
+    "pairs",
+    "excluded",
+    "culled",
+    "advanced",
+    "iterations",
+    "node_pairs",
+    "leaf_pairs",
+];
+
 /// What `ChainScene.check_edge` found: `outcome` (`"free"`, `"contact"` or
 /// `"undecided"`), `free` (certified free), `free_until` (the edge is
 /// certified free on `[0, free_until]`; 1 when free), `at` (a contact's
@@ -1137,6 +1197,7 @@ impl ChainScene {
 /// obstacle's or other link's), `stats` (the work: `tests`, `leaf_tests`,
 /// `intervals`).
 #[pyclass(frozen, module = "motion_bound")]
+#[derive(Debug, PartialEq)]
 pub struct EdgeReport {
     outcome: &'static str,
     free_until: f64,
@@ -1147,6 +1208,48 @@ pub struct EdgeReport {
 
 #[pymethods]
 impl EdgeReport {
+    /// Rebuilds a report from its fields (what pickling does).
+    #[new]
+    #[pyo3(signature = (outcome, free_until, at, pair, pair_kind, pair_indices, stats))]
+    fn py_new(
+        outcome: &str,
+        free_until: f64,
+        at: Option<f64>,
+        pair: Option<(String, String)>,
+        pair_kind: Option<&str>,
+        pair_indices: Option<(usize, usize)>,
+        stats: &Bound<'_, PyDict>,
+    ) -> PyResult<Self> {
+        Ok(Self {
+            outcome: one_of(outcome, &["free", "contact", "undecided"], "outcome")?,
+            free_until,
+            at,
+            pair: pair_of(pair, pair_kind, pair_indices)?,
+            stats: stats_of(stats, EDGE_STATS)?,
+        })
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
+        let py = slf.py();
+        let r = slf.get();
+        let args = (
+            r.outcome,
+            r.free_until,
+            r.at,
+            r.pair(),
+            r.pair_kind(),
+            r.pair_indices(),
+            r.stats(py)?,
+        )
+            .into_pyobject(py)?;
+        PyTuple::new(py, [py.get_type::<Self>().into_any(), args.into_any()])
+    }
+
+    /// Equal when every field is (a pickled copy is equal).
+    fn __eq__(&self, other: &Self) -> bool {
+        self == other
+    }
+
     /// `"free"`, `"contact"` or `"undecided"`.
     #[getter]
     fn outcome(&self) -> &'static str {
@@ -1225,6 +1328,7 @@ impl EdgeReport {
 /// on the link and on the obstacle or second link), `segment` (a path's
 /// segment index; None for `check_segment`), `stats`.
 #[pyclass(frozen, module = "motion_bound")]
+#[derive(Debug, PartialEq)]
 pub struct SegmentReport {
     outcome: &'static str,
     time: Option<f64>,
@@ -1237,6 +1341,66 @@ pub struct SegmentReport {
 
 #[pymethods]
 impl SegmentReport {
+    /// Rebuilds a report from its fields (what pickling does).
+    #[new]
+    #[pyo3(signature = (outcome, time, pair, pair_kind, pair_indices, distance, point_a, point_b, segment, stats))]
+    #[allow(clippy::too_many_arguments)]
+    fn py_new(
+        outcome: &str,
+        time: Option<f64>,
+        pair: Option<(String, String)>,
+        pair_kind: Option<&str>,
+        pair_indices: Option<(usize, usize)>,
+        distance: Option<f64>,
+        point_a: Option<&Bound<'_, PyAny>>,
+        point_b: Option<&Bound<'_, PyAny>>,
+        segment: Option<usize>,
+        stats: &Bound<'_, PyDict>,
+    ) -> PyResult<Self> {
+        let points = match (point_a, point_b) {
+            (Some(a), Some(b)) => Some((vec3(a, "point_a")?, vec3(b, "point_b")?)),
+            (None, None) => None,
+            _ => return Err(PyValueError::new_err("point_a, point_b: give both or none")),
+        };
+        Ok(Self {
+            outcome: one_of(
+                outcome,
+                &["contact", "separated", "iteration_limit", "unknown"],
+                "outcome",
+            )?,
+            time,
+            pair: pair_of(pair, pair_kind, pair_indices)?,
+            distance,
+            points,
+            segment,
+            stats: stats_of(stats, SEGMENT_STATS)?,
+        })
+    }
+
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
+        let py = slf.py();
+        let r = slf.get();
+        let args = (
+            r.outcome,
+            r.time,
+            r.pair(),
+            r.pair_kind(),
+            r.pair_indices(),
+            r.distance,
+            r.point_a(py)?,
+            r.point_b(py)?,
+            r.segment,
+            r.stats(py)?,
+        )
+            .into_pyobject(py)?;
+        PyTuple::new(py, [py.get_type::<Self>().into_any(), args.into_any()])
+    }
+
+    /// Equal when every field is (a pickled copy is equal).
+    fn __eq__(&self, other: &Self) -> bool {
+        self == other
+    }
+
     /// `"contact"`, `"separated"` or `"iteration_limit"`.
     #[getter]
     fn outcome(&self) -> &'static str {

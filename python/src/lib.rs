@@ -20,6 +20,7 @@ mod motion;
 mod query;
 mod scene;
 mod testing;
+mod trimesh_scene;
 
 use pyo3::prelude::*;
 

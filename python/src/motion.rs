@@ -231,6 +231,16 @@ pub(crate) fn pose_arg(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Pose> {
 }
 
 impl Pose {
+    /// The rotation's entries row by row, then the translation: what `==` compares.
+    fn entries(&self) -> [f64; 12] {
+        let r = self.iso.rotation().matrix();
+        let t = self.iso.translation().to_array();
+        [
+            r[0][0], r[0][1], r[0][2], r[1][0], r[1][1], r[1][2], r[2][0], r[2][1], r[2][2], t[0],
+            t[1], t[2],
+        ]
+    }
+
     /// As `from_source`, an error naming the argument `what`.
     pub(crate) fn from_source_named(source: PoseSource, what: &str) -> PyResult<Self> {
         Ok(Self {
@@ -357,6 +367,17 @@ impl Pose {
         }
     }
 
+    /// Equal when their matrices (`matrix`, as the crate uses it) are, entry by entry: the
+    /// same placement, whatever it was made from (`Pose() == Pose(numpy.eye(4))`).
+    fn __eq__(&self, other: &Self) -> bool {
+        self.entries() == other.entries()
+    }
+
+    /// Consistent with `==` (equal poses hash alike), so that a pose can be a dict key.
+    fn __hash__(&self) -> u64 {
+        hash_floats(&self.entries())
+    }
+
     fn __repr__(&self) -> String {
         let q = self.iso.rotation().quaternion();
         let t = self.iso.translation();
@@ -365,6 +386,18 @@ impl Pose {
             q[0], q[1], q[2], q[3], t.x, t.y, t.z
         )
     }
+}
+
+/// A hash of floats consistent with `==` on them (`-0.0` and `0.0` hash alike; none is NaN
+/// where it is used).
+fn hash_floats(xs: &[f64]) -> u64 {
+    use std::hash::{Hash, Hasher};
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    for x in xs {
+        // `x + 0.0` turns `-0.0` into `0.0`.
+        (x + 0.0).to_bits().hash(&mut h);
+    }
+    h.finish()
 }
 
 /// What a motion was made from.
@@ -592,6 +625,48 @@ impl Motion {
             ),
         };
         PyTuple::new(py, [f, args.into_any()])
+    }
+
+    /// Equal when they are the same motion, bit for bit: the same start pose, velocities and
+    /// interval (a pickled copy is equal; two motions made differently may differ in the last
+    /// bits).
+    fn __eq__(&self, other: &Self) -> bool {
+        self.motion == other.motion
+    }
+
+    /// Consistent with `==`, so that a motion can be a dict key.
+    fn __hash__(&self) -> u64 {
+        let m = &self.motion;
+        let p = m.start_pose();
+        let r = p.rotation().matrix();
+        let (t, v, w, i) = (
+            p.translation().to_array(),
+            m.linear().to_array(),
+            m.angular().to_array(),
+            m.interval(),
+        );
+        hash_floats(&[
+            r[0][0],
+            r[0][1],
+            r[0][2],
+            r[1][0],
+            r[1][1],
+            r[1][2],
+            r[2][0],
+            r[2][1],
+            r[2][2],
+            t[0],
+            t[1],
+            t[2],
+            v[0],
+            v[1],
+            v[2],
+            w[0],
+            w[1],
+            w[2],
+            i.start(),
+            i.end(),
+        ])
     }
 
     fn __repr__(&self) -> String {

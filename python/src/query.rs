@@ -41,6 +41,20 @@ pub(crate) struct Flat {
 const NAN3: [f64; 3] = [f64::NAN; 3];
 
 impl Flat {
+    /// Every field equal, bit for bit, NaN (an absent field) equal to NaN.
+    fn same(&self, other: &Self) -> bool {
+        let (a, b) = (self, other);
+        let same = |x: f64, y: f64| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
+        let same3 = |x: [f64; 3], y: [f64; 3]| (0..3).all(|k| same(x[k], y[k]));
+        a.code == b.code
+            && same(a.time, b.time)
+            && same3(a.on_a, b.on_a)
+            && same3(a.on_b, b.on_b)
+            && same3(a.normal, b.normal)
+            && same(a.distance, b.distance)
+            && a.iterations == b.iterations
+    }
+
     pub(crate) fn of(report: &CaReport<f64>) -> Self {
         let mut f = Self {
             code: 2,
@@ -239,18 +253,9 @@ impl Report {
         PyTuple::new(py, [py.get_type::<Self>().into_any(), args.into_any()])
     }
 
+    /// Equal when every field is, bit for bit (an absent field equals an absent one).
     fn __eq__(&self, other: &Self) -> bool {
-        let a = &self.flat;
-        let b = &other.flat;
-        let same = |x: f64, y: f64| x.to_bits() == y.to_bits() || (x.is_nan() && y.is_nan());
-        let same3 = |x: [f64; 3], y: [f64; 3]| (0..3).all(|k| same(x[k], y[k]));
-        a.code == b.code
-            && same(a.time, b.time)
-            && same3(a.on_a, b.on_a)
-            && same3(a.on_b, b.on_b)
-            && same3(a.normal, b.normal)
-            && same(a.distance, b.distance)
-            && a.iterations == b.iterations
+        self.flat.same(&other.flat)
     }
 
     fn __repr__(&self) -> String {
@@ -734,6 +739,12 @@ impl BatchReport {
             ],
         )?;
         PyTuple::new(py, [py.get_type::<Self>().into_any(), args.into_any()])
+    }
+
+    /// Equal when they hold as many queries and every query's report is equal (as `Report`).
+    fn __eq__(&self, other: &Self) -> bool {
+        self.flats.len() == other.flats.len()
+            && self.flats.iter().zip(&other.flats).all(|(a, b)| a.same(b))
     }
 
     fn __repr__(&self) -> String {

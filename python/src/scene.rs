@@ -5,7 +5,7 @@ use motion_bound::scene::{Scene as RustScene, SceneParams, SceneWorkspace};
 use motion_bound::TimeInterval;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
+use pyo3::types::{PyDict, PyList, PyTuple};
 
 use crate::body::Body;
 use crate::errors::{input, input_in, positive_arg, scene as scene_err};
@@ -20,7 +20,9 @@ use crate::query::{params, Flat, Report};
 /// (what the broad phase skipped, each skip counted). The GIL is released
 /// during the query; by default (`parallel=True`, as for
 /// `time_of_impact_batch`) the pairs run on every core, with the same
-/// answers bit for bit as `parallel=False` (one core).
+/// answers bit for bit as `parallel=False` (one core). It pickles: its
+/// duration, its bodies with their motions (a body added twice stays one
+/// object) and the last query's `stats`.
 #[pyclass(module = "motion_bound")]
 pub struct Scene {
     duration: f64,
@@ -164,6 +166,52 @@ impl Scene {
         Ok(Some(d))
     }
 
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
+        let py = slf.py();
+        let this = slf.borrow();
+        let bodies = PyList::empty(py);
+        for (body, motion) in &this.bodies {
+            bodies.append((body.clone_ref(py), Bound::new(py, motion.clone())?))?;
+        }
+        let state = (bodies, this.stats(py)?).into_pyobject(py)?;
+        PyTuple::new(
+            py,
+            [
+                py.get_type::<Self>().into_any(),
+                (this.duration,).into_pyobject(py)?.into_any(),
+                state.into_any(),
+            ],
+        )
+    }
+
+    /// Adds the pickled bodies and motions (as `add`) and restores the stats.
+    fn __setstate__(&mut self, state: SceneState<'_>) -> PyResult<()> {
+        let (bodies, stats) = state;
+        for (body, motion) in bodies {
+            self.add(body, &motion)?;
+        }
+        self.stats = match stats {
+            None => None,
+            Some(d) => {
+                let get = |key: &str| -> PyResult<Bound<'_, PyAny>> {
+                    d.get_item(key)?.ok_or_else(|| {
+                        pyo3::exceptions::PyKeyError::new_err(format!("stats: no {key:?}"))
+                    })
+                };
+                let mut s = motion_bound::scene::SceneStats::default();
+                s.bodies = get("bodies")?.extract()?;
+                s.static_bodies = get("static_bodies")?.extract()?;
+                s.pairs_all = get("pairs_all")?.extract()?;
+                s.pairs_static = get("pairs_static")?.extract()?;
+                s.pairs_culled = get("pairs_culled")?.extract()?;
+                s.pairs_tested = get("pairs_tested")?.extract()?;
+                s.iterations = get("iterations")?.extract()?;
+                Some(s)
+            }
+        };
+        Ok(())
+    }
+
     fn __repr__(&self) -> String {
         format!(
             "Scene({} bodies, duration={})",
@@ -172,6 +220,12 @@ impl Scene {
         )
     }
 }
+
+/// A pickled scene's state: its bodies with their motions, and the last query's stats.
+type SceneState<'py> = (
+    Vec<(Bound<'py, Body>, Bound<'py, PyAny>)>,
+    Option<Bound<'py, PyDict>>,
+);
 
 /// A scene query's refusal, naming the body it is about where the crate's
 /// message does not: a half-space whose motion turns.

@@ -4,6 +4,7 @@ trimesh means them (closed-form times and trimesh's own tessellation), the scene
 default (its serial answers), reports' arrays (the batch's rows), a motion's start and end
 (Rodrigues in numpy)."""
 
+import io
 import pickle
 
 import numpy as np
@@ -503,3 +504,44 @@ def test_motion_start_and_end():
     # start and end rebuild the motion.
     again = mb.Motion.between(m.start, m.end, duration=1.5)
     np.testing.assert_allclose(again.matrix_at(0.7), m.matrix_at(0.7), atol=1e-12)
+
+
+def two_placed_boxes():
+    """A trimesh.Scene of two unit cubes, one node at (2, 0, 0), one at (0, 3, 0)
+    (both from one geometry at the origin: only the scene graph places them)."""
+    scene = trimesh.Scene()
+    cube = trimesh.creation.box(extents=[1, 1, 1])
+    for at in ([2.0, 0, 0], [0, 3.0, 0]):
+        scene.add_geometry(cube, geom_name="cube", node_name=f"cube at {at}",
+                           transform=trimesh.transformations.translation_matrix(at))
+    return scene
+
+
+def test_from_trimesh_takes_a_scene_placed_by_its_graph():
+    """`trimesh.load` returns a Scene for many GLB and OBJ files: its meshes
+    count where the scene graph puts them. A ball of radius 0.1 from the
+    origin at speed 4 along x first touches the cube at x = 2 (face at 1.5)
+    at t = 1.4 / 4; along y the cube at y = 3 (face at 2.5) at t = 2.4 / 4."""
+    scene = two_placed_boxes()
+    glb = trimesh.load(io.BytesIO(scene.export(file_type="glb")), file_type="glb")
+    assert isinstance(glb, trimesh.Scene)
+    still = mb.Motion.still(np.eye(4))
+    for where in (scene, glb):
+        boxes = mb.from_trimesh(where)
+        assert boxes.kind == "mesh"
+        for direction, touch in (([4.0, 0, 0], 1.4 / 4), ([0, 4.0, 0], 2.4 / 4)):
+            r = mb.time_of_impact(mb.ball(0.1), mb.Motion(np.eye(4), direction, [0, 0, 0]),
+                                  boxes, still, contact_distance=1e-4)
+            assert r.outcome == "contact", (direction, r)
+            assert touch - 1e-3 <= r.time <= touch, (direction, r.time, touch)
+    # Closed and outward-wound: solid, so a ball inside the cube at x = 2 is in contact.
+    inside = mb.time_of_impact(mb.ball(0.1), mb.Motion.still(mb.Pose.from_translation([2, 0, 0])),
+                               mb.from_trimesh(scene), still)
+    assert inside.outcome == "initial_contact"
+
+
+def test_from_trimesh_refuses_a_scene_without_triangles_naming_force_mesh():
+    points = trimesh.Scene(trimesh.PointCloud(np.random.default_rng(0).normal(size=(5, 3))))
+    for scene in (trimesh.Scene(), points):
+        with pytest.raises(ValueError, match=r'^mesh: .*force="mesh"'):
+            mb.from_trimesh(scene)

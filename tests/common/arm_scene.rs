@@ -142,7 +142,10 @@ pub fn clutter() -> Result<Vec<Item>, Error> {
 /// last pairs.
 pub fn bare_arm_scene(arm: Arm) -> Result<(ChainScene<f64>, Vec<LinkPair>), Error> {
     let (path, ready) = arm_file(arm);
-    let chain = Chain::<f64>::from_urdf_file(format!("{}/{path}", env!("CARGO_MANIFEST_DIR")))?;
+    let chain = Chain::<f64>::from_urdf_file(format!(
+        "{}/{path}",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/..")
+    ))?;
     let mut scene = ChainScene::new(chain);
     if arm == Arm::Panda {
         for (a, b) in PANDA_SRDF_DISABLED {

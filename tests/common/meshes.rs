@@ -46,11 +46,17 @@ pub const SHIPPED: [Shipped; 4] = [
     },
 ];
 
-/// The path of a file in `data/`.
+/// The path of a file in the repository's `data/`: beside the manifest of the crate, or one
+/// level up for the workspace members that build the root's examples and tests from their files
+/// (`demo/`, `repo-targets/`).
 pub fn data_path(name: &str) -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("data")
-        .join(name)
+    let here = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let data = if here.join("data").is_dir() {
+        here.join("data")
+    } else {
+        here.join("..").join("data")
+    };
+    data.join(name)
 }
 
 /// The gunzipped text of `data/<name>`, or why it could not be read.
