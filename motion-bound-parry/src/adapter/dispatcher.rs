@@ -10,6 +10,7 @@ use motion_bound::ca::CaParams;
 use super::cache::ShapeCache;
 use super::error::CastError;
 use super::parry;
+use super::past_contact::PastContact;
 use super::swept::Swept;
 use parry::math::{Pose, Real, Vector};
 use parry::query::{
@@ -238,6 +239,22 @@ impl QueryDispatcher for CertifiedDispatcher {
             end_time,
             stop_at_penetration,
         ) {
+            // Touching at the start, asked as rapier's CCD asks (a solid
+            // pair, `stop_at_penetration` off): rapier ignores a hit at the
+            // start, so the answer is whether the motion goes deeper
+            // (`past_contact`): no (sliding along or leaving: parry's
+            // answer for shapes moving out of a penetration), or the first
+            // time it may, which rapier clamps at.
+            Ok(Some(hit)) if !stop_at_penetration && hit.time_of_impact <= start_time => {
+                match self.past_contact(motion1, g1, motion2, g2, start_time, end_time) {
+                    PastContact::Never => Ok(None),
+                    PastContact::At(t) if t > start_time => Ok(Some(ShapeCastHit {
+                        time_of_impact: t,
+                        ..hit
+                    })),
+                    PastContact::At(_) | PastContact::Unknown => Ok(Some(hit)),
+                }
+            }
             Ok(hit) => Ok(hit),
             Err(_) => {
                 self.counters
