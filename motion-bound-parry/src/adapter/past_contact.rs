@@ -102,7 +102,8 @@ impl CertifiedDispatcher {
     ) -> PastContact {
         let d = self.params().contact_distance;
         let span = end_time - start_time;
-        if !(span > 0.0) {
+        // NaN or an empty interval: not decided.
+        if span.is_nan() || span <= 0.0 {
             return PastContact::Unknown;
         }
         if translates(motion2, g2, span, d) {
