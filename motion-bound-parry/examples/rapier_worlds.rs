@@ -710,7 +710,7 @@ pub(crate) fn run_world(
 /// cuboid wall of `wall-cuboid` (gravity on, 9.81 down y; radius 0.05, at
 /// 200 m/s from 0.5 in front of the wall, spinning at `spin` rad/s about
 /// `z`, restitution 0), in `mode`.
-fn slide(mode: Mode, spin: f64) -> f64 {
+pub(crate) fn slide(mode: Mode, spin: f64) -> f64 {
     let dispatcher = CertifiedDispatcher::new();
     let mut pass = CertifiedPass::new().with_dispatcher(dispatcher.clone());
     let mut w = PhysicsWorld::default();

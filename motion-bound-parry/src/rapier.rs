@@ -365,45 +365,63 @@ impl CertifiedPass {
                 let j = pb.body;
                 let (m1, m2) = (&pa.motion, &pb.motion);
                 stats.casts += 1;
-                match self
+                // First without re-asking: a pair within the contact
+                // distance at the start is `past_contact`'s, and only when
+                // that cannot decide is it asked again (as rapier's casts
+                // are) and, still touching, left to parry's depths.
+                let first = self
                     .dispatcher
-                    .cast_certified(m1, ci.shape(), m2, cj.shape(), 0.0, dt, true)
-                {
-                    Ok(Some(hit)) if hit.time_of_impact > 0.0 => {
-                        hits.push((i, j, hit.time_of_impact));
-                    }
-                    // Touching at the start: a resting contact, the
-                    // solver's, unless the step would end it deeper
-                    // than it began (by more than the contact
-                    // distance): then the body is held at its start.
-                    Ok(Some(_)) => {
+                    .cast_first(m1, ci.shape(), m2, cj.shape(), 0.0, dt);
+                let first = match first {
+                    Ok(Some(hit)) if hit.time_of_impact <= 0.0 => {
                         match self
                             .dispatcher
                             .past_contact(m1, ci.shape(), m2, cj.shape(), 0.0, dt)
                         {
-                            PastContact::Never => {}
+                            PastContact::Never => continue,
                             PastContact::At(t) => {
                                 stats.held += 1;
                                 hits.push((i, j, t));
+                                continue;
                             }
-                            PastContact::Unknown => {
-                                let depth = |t: f64| {
-                                    parry3d_f64::query::contact(
-                                        &m1.position_at_time(t),
-                                        Swept::see_through(ci.shape()),
-                                        &m2.position_at_time(t),
-                                        Swept::see_through(cj.shape()),
-                                        0.0,
-                                    )
-                                    .ok()
-                                    .flatten()
-                                    .map_or(0.0, |c| (-c.dist).max(0.0))
-                                };
-                                if depth(dt) > depth(0.0) + contact_distance {
-                                    stats.held += 1;
-                                    hits.push((i, j, 0.0));
-                                }
-                            }
+                            PastContact::Unknown => self.dispatcher.cast_certified(
+                                m1,
+                                ci.shape(),
+                                m2,
+                                cj.shape(),
+                                0.0,
+                                dt,
+                                true,
+                            ),
+                        }
+                    }
+                    other => other,
+                };
+                match first {
+                    Ok(Some(hit)) if hit.time_of_impact > 0.0 => {
+                        hits.push((i, j, hit.time_of_impact));
+                    }
+                    // Touching at the start, the rule undecided (both
+                    // bodies rotating): a resting contact, the solver's,
+                    // unless the step would end it deeper than it began
+                    // (by more than the contact distance): then the body
+                    // is held at its start.
+                    Ok(Some(_)) => {
+                        let depth = |t: f64| {
+                            parry3d_f64::query::contact(
+                                &m1.position_at_time(t),
+                                Swept::see_through(ci.shape()),
+                                &m2.position_at_time(t),
+                                Swept::see_through(cj.shape()),
+                                0.0,
+                            )
+                            .ok()
+                            .flatten()
+                            .map_or(0.0, |c| (-c.dist).max(0.0))
+                        };
+                        if depth(dt) > depth(0.0) + contact_distance {
+                            stats.held += 1;
+                            hits.push((i, j, 0.0));
                         }
                     }
                     Ok(_) => {}

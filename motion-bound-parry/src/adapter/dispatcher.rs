@@ -159,6 +159,36 @@ impl CertifiedDispatcher {
     }
 }
 
+impl CertifiedDispatcher {
+    /// [`cast_certified`](Self::cast_certified) with no re-asking: shapes
+    /// within the contact distance at `start_time` are a hit at the start
+    /// (the pass decides those with `past_contact`).
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn cast_first(
+        &self,
+        motion1: &NonlinearRigidMotion,
+        g1: &dyn Shape,
+        motion2: &NonlinearRigidMotion,
+        g2: &dyn Shape,
+        start_time: Real,
+        end_time: Real,
+    ) -> Result<Option<ShapeCastHit>, CastError> {
+        let hit = self.cache.cast_with_attempts(
+            motion1,
+            g1,
+            motion2,
+            g2,
+            start_time,
+            end_time,
+            true,
+            &self.params,
+            0,
+        )?;
+        self.counters.certified.fetch_add(1, Ordering::Relaxed);
+        Ok(hit)
+    }
+}
+
 /// Both shapes with any [`Swept`] layers removed: what each query handed to
 /// parry's dispatcher gives it.
 fn seen<'a, 'b>(g1: &'a dyn Shape, g2: &'b dyn Shape) -> (&'a dyn Shape, &'b dyn Shape) {
