@@ -164,6 +164,7 @@ impl CertifiedDispatcher {
     /// within the contact distance at `start_time` are a hit at the start
     /// (the pass decides those with `past_contact`).
     #[allow(clippy::too_many_arguments)]
+    #[allow(dead_code)] // the rapier pass's: the f64 adapter's, with the `rapier` feature
     pub(crate) fn cast_first(
         &self,
         motion1: &NonlinearRigidMotion,
