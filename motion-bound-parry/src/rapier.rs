@@ -19,22 +19,25 @@
 //! moves the dynamic bodies of each group linked by hits back to the pose,
 //! on that very motion, at the group's earliest certified time of impact.
 //! Velocities are kept: the next step's contact solver resolves the
-//! contact. A pair touching at the start is a resting contact, left to the
-//! solver, unless the body goes deeper: the first time it may reach more
+//! contact. A pair within the contact distance at the start (its first
+//! cast is not asked again with a smaller one) is a resting contact, left
+//! to the solver, unless the body goes deeper: the first time it may reach more
 //! than the contact distance past the plane that separated the pair at the
 //! start (certified, a cast against that half-space: a body the solver
 //! pushes on into a thin wall is stopped there, one sliding along the wall
 //! or leaving it is not), and its group is stopped then. When the other
-//! body rotates, or a shape's extent is not computed (heightfields,
-//! polylines, voxels), the rule is parry's static penetration depth at
-//! both ends (deeper at the end by more than the contact distance: the
-//! bodies are held at their start poses); it does not see a body pass
-//! right through a thin rotating body within one step.
+//! body rotates too, or a shape's extent is not computed (heightfields,
+//! polylines, voxels), the pair is asked again with a smaller contact
+//! distance, and still touching, the rule is parry's static penetration
+//! depth at both ends (deeper at the end by more than the contact
+//! distance: the bodies are held at their start poses); that does not see
+//! a body pass right through a thin rotating body within one step.
+//! A swept body stopped early stands at its stop pose for the rest of the
+//! step: every swept body still moving then is cast against it there, and
+//! stopped at the hit, in rounds (`proofs/12-shapes.md`, Lemma 12.6).
 //!
-//! What it does not do: bodies stopped at different times (two groups, or
-//! a group and a body it never met) are each where their own motion put
-//! them; a body stopped early may stand where another passes later in the
-//! step (rapier's own clamping has the same limit; substeps remove it). Its
+//! What it does not do: a body without CCD (or kinematic) is where rapier
+//! put it, even where a stopped body stands. Its
 //! cost: each collider's motion and swept box once per step, then one cast
 //! per pair of colliders whose swept boxes meet, unless the balls bounding
 //! them about their motions' centres (which move on straight lines) never
