@@ -1,5 +1,5 @@
 //! Rapier's continuous collision detection, with and without the certified
-//! cast, in five stress worlds, judged by an independent checker.
+//! cast, in eight stress worlds, judged by an independent checker.
 //!
 //! ```text
 //! cargo run --release -p motion-bound-parry --features rapier --example rapier_worlds -- --launches 20 [--rounds 5]
@@ -18,10 +18,12 @@
 //!   bodies' actual motions over the step, cast pairwise, moved back to the
 //!   earliest time of impact; its time is counted in the step's).
 //!
-//! With `--swept`, a third run per world (a `swept` line): the same with
+//! With `--swept`, two more runs per world: a `swept` line, the same with
 //! every dynamic collider's shape wrapped in [`Swept`] (fixed ones plain),
 //! so that rapier's own CCD also hands the dynamic bodies' pairs to the
-//! certified cast.
+//! certified cast; and a `swept, no pass` line, the wrapped shapes and the
+//! dispatcher without the pass (rapier's own CCD casts only: never between
+//! two bullets, clamped along rapier's path).
 //!
 //! The worlds:
 //!
@@ -32,7 +34,17 @@
 //!   triangle-mesh plate (zero thickness);
 //! - `mesh`: a dynamic triangle-mesh sphere (radius 0.3) at 10 to 60 m/s,
 //!   spinning, at a wall 0.1 thick;
-//! - `cylinder`: a spinning cylinder or cone at 10 to 50 m/s at a thin wall.
+//! - `cylinder`: a spinning cylinder or cone at 10 to 50 m/s at a thin wall;
+//! - `swarm`: twenty small balls and thin boxes at 150 to 250 m/s, spinning
+//!   at 20 to 80 rad/s, at a wall 0.04 thick;
+//! - `wall-cuboid`, `wall-mesh`: twenty balls (radius 0.05) and cubes
+//!   (half side 0.05) at 200 m/s, spinning up to 60 rad/s, at a wall 0.01
+//!   thick: a cuboid, or its 12 triangles as a mesh (issue 55's wall).
+//!
+//! After the worlds, the `slide` lines: a ball stopped at the cuboid wall
+//! of `wall-cuboid` at 200 m/s, under gravity, then sliding down the wall;
+//! how far it falls in 120 steps in each setup (rapier's friction gives it
+//! a spin as it slides, so it spins even when launched still).
 //!
 //! # The checker
 //!
@@ -149,17 +161,24 @@ pub(crate) enum World {
     /// Twenty small spinning balls and boxes at about 200 m/s at a thin
     /// wall (issue 40's wall world).
     Swarm,
+    /// Twenty balls and cubes of 0.05 at 200 m/s, spinning up to 60 rad/s,
+    /// at a cuboid wall 0.01 thick (issue 55's wall world).
+    WallCuboid,
+    /// The same at a 12-triangle mesh of that wall.
+    WallMesh,
 }
 
 impl World {
     /// Every world, in the order printed.
-    pub(crate) const ALL: [Self; 6] = [
+    pub(crate) const ALL: [Self; 8] = [
         Self::Board,
         Self::Bullets,
         Self::Plate,
         Self::Mesh,
         Self::Cylinder,
         Self::Swarm,
+        Self::WallCuboid,
+        Self::WallMesh,
     ];
 
     /// The world's short name.
@@ -171,6 +190,8 @@ impl World {
             Self::Mesh => "mesh",
             Self::Cylinder => "cylinder",
             Self::Swarm => "swarm",
+            Self::WallCuboid => "wall-cuboid",
+            Self::WallMesh => "wall-mesh",
         }
     }
 }
@@ -188,6 +209,9 @@ pub(crate) enum Mode {
     /// [`CertifiedDispatcher`] and [`CertifiedPass`], dynamic colliders
     /// wrapped in [`Swept`].
     Swept,
+    /// [`CertifiedDispatcher`], dynamic colliders wrapped in [`Swept`], no
+    /// pass (the README's "many fast bodies, no pass").
+    SweptOnly,
 }
 
 /// A thin fixed obstacle: its local normal axis and half extents, for the
@@ -384,6 +408,38 @@ fn build(world: World, seed: u64) -> Vec<Spec> {
             }
             specs
         }
+        World::WallCuboid | World::WallMesh => {
+            let half = Vector::new(0.005, 4.0, 4.0);
+            let mut specs = vec![if world == World::WallCuboid {
+                wall(half.x, half.y)
+            } else {
+                // A user's mesh of the wall: the box's 12 triangles, a
+                // surface (not flagged as a solid).
+                let (v, t) = parry3d_f64::shape::Cuboid::new(half).to_trimesh();
+                Spec {
+                    shape: SharedShape::trimesh(v, t).expect("a valid box mesh"),
+                    pose: Pose::IDENTITY,
+                    linvel: Vector::ZERO,
+                    angvel: Vector::ZERO,
+                    dynamic: false,
+                    thin: Some(Thin { axis: 0, half }),
+                }
+            }];
+            for k in 0..20 {
+                let shape = if k % 2 == 0 {
+                    SharedShape::ball(0.05)
+                } else {
+                    SharedShape::cuboid(0.05, 0.05, 0.05)
+                };
+                let cell = Vector::new(0.0, (k % 4) as f64 * 1.4 - 2.1, (k / 4) as f64 * 1.4 - 2.8);
+                let pos =
+                    Vector::new(-4.0 + r.range(-1.0, 1.0), 0.0, 0.0) + cell + jitter(&mut r, 0.3);
+                let lin = Vector::new(200.0, 0.0, 0.0) + jitter(&mut r, 4.0);
+                let ang = unit(&mut r) * r.range(0.0, 60.0);
+                specs.push(dynamic(shape, Pose::from_parts(pos, rot(&mut r)), lin, ang));
+            }
+            specs
+        }
     }
 }
 
@@ -563,7 +619,7 @@ fn make_world(
                 .angvel(s.angvel)
                 .ccd_enabled(true)
                 .can_sleep(false);
-            let shape = if mode == Mode::Swept {
+            let shape = if matches!(mode, Mode::Swept | Mode::SweptOnly) {
                 Swept::shared(s.shape.clone())
             } else {
                 s.shape.clone()
@@ -650,6 +706,47 @@ pub(crate) fn run_world(
     t
 }
 
+/// The distance a ball falls in 120 steps after it is stopped at the
+/// cuboid wall of `wall-cuboid` (gravity on, 9.81 down y; radius 0.05, at
+/// 200 m/s from 0.5 in front of the wall, spinning at `spin` rad/s about
+/// `z`, restitution 0), in `mode`.
+pub(crate) fn slide(mode: Mode, spin: f64) -> f64 {
+    let dispatcher = CertifiedDispatcher::new();
+    let mut pass = CertifiedPass::new().with_dispatcher(dispatcher.clone());
+    let mut w = PhysicsWorld::default();
+    w.integration_parameters.dt = DT;
+    if mode != Mode::Default {
+        w.narrow_phase = NarrowPhase::with_query_dispatcher(dispatcher.clone());
+    }
+    let wall = SharedShape::cuboid(0.005, 4.0, 4.0);
+    w.insert(
+        RigidBodyBuilder::fixed(),
+        ColliderBuilder::new(wall).restitution(0.0),
+    );
+    let ball = SharedShape::ball(0.05);
+    let ball = if matches!(mode, Mode::Swept | Mode::SweptOnly) {
+        Swept::shared(ball)
+    } else {
+        ball
+    };
+    let rb = RigidBodyBuilder::dynamic()
+        .translation(Vector::new(-0.5, 2.0, 0.0))
+        .linvel(Vector::new(200.0, 0.0, 0.0))
+        .angvel(Vector::new(0.0, 0.0, spin))
+        .ccd_enabled(true)
+        .can_sleep(false);
+    let (h, _) = w.insert(rb, ColliderBuilder::new(ball).restitution(0.0));
+    let y0 = w.bodies[h].translation().y;
+    for _ in 0..120 {
+        if matches!(mode, Mode::Ours | Mode::Swept) {
+            pass.step(&mut w);
+        } else {
+            w.step();
+        }
+    }
+    y0 - w.bodies[h].translation().y
+}
+
 fn main() {
     let mut args = Args::from_env(
         "rapier_worlds [--launches 20] [--steps 150] [--world NAME] [--rounds 1] [--verbose] [--swept]",
@@ -693,15 +790,17 @@ fn main() {
             1e3 * o_secs / o.steps.max(1) as f64,
         );
         if with_swept {
-            let s = run_world(world, Mode::Swept, launches, steps, true, verbose);
-            println!(
-                "swept {}: tunnelled {}, late {}, ms per step {:.4}, dispatcher certified casts {}",
-                world.name(),
-                s.tunnelled,
-                s.late,
-                s.ms_per_step(),
-                s.stats.certified,
-            );
+            for (mode, label) in [(Mode::Swept, "swept"), (Mode::SweptOnly, "swept, no pass,")] {
+                let s = run_world(world, mode, launches, steps, true, verbose);
+                println!(
+                    "{label} {}: tunnelled {}, late {}, ms per step {:.4}, dispatcher certified casts {}",
+                    world.name(),
+                    s.tunnelled,
+                    s.late,
+                    s.ms_per_step(),
+                    s.stats.certified,
+                );
+            }
         }
         stats.push((
             world,
@@ -720,6 +819,19 @@ fn main() {
             s.certified,
             s.handed_to_parry,
             1e3 * pass_secs / steps.max(1) as f64
+        );
+    }
+    // A ball stopped at the wall, then sliding down it under gravity.
+    for spin in [0.0, 24.0] {
+        let d = slide(Mode::Default, spin);
+        let fell = [Mode::Ours, Mode::Swept, Mode::SweptOnly].map(|m| slide(m, spin));
+        println!(
+            "slide, spin {spin} rad/s: fell in 120 steps default {d:.3}, ours {:.3} ({:.3} of default), \
+             swept {:.3}, swept no pass {:.3}",
+            fell[0],
+            fell[0] / d,
+            fell[1],
+            fell[2],
         );
     }
     // The cost of installing the dispatcher with nothing wrapped: the same

@@ -13,6 +13,8 @@
 //!   swept, convert, cast).
 //! - `dispatcher.rs`: `CertifiedDispatcher`, rapier's query dispatcher
 //!   (error, swept, cache).
+//! - `past_contact.rs`: whether a pair touching at the start goes deeper
+//!   (swept, dispatcher).
 
 use super::parry;
 
@@ -26,6 +28,8 @@ mod convert;
 mod dispatcher;
 #[path = "adapter/error.rs"]
 mod error;
+#[path = "adapter/past_contact.rs"]
+mod past_contact;
 #[path = "adapter/swept.rs"]
 mod swept;
 
@@ -34,4 +38,6 @@ pub use cast::cast_shapes_nonlinear;
 pub use convert::{isometry, rigid_motion, Body};
 pub use dispatcher::{CertifiedDispatcher, DispatchStats};
 pub use error::CastError;
+#[allow(unused_imports)] // the f32 adapter has no rapier pass
+pub(crate) use past_contact::PastContact;
 pub use swept::Swept;

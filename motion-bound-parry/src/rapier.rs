@@ -19,15 +19,25 @@
 //! moves the dynamic bodies of each group linked by hits back to the pose,
 //! on that very motion, at the group's earliest certified time of impact.
 //! Velocities are kept: the next step's contact solver resolves the
-//! contact. A pair touching at the start is a resting contact, left to the
-//! solver as rapier leaves it, unless the step would end it deeper than it
-//! began (parry's static penetration depth at both ends, by more than the
-//! contact distance): then its bodies are held at their start poses.
+//! contact. A pair within the contact distance at the start (its first
+//! cast is not asked again with a smaller one) is a resting contact, left
+//! to the solver, unless the body goes deeper: the first time it may reach more
+//! than the contact distance past the plane that separated the pair at the
+//! start (certified, a cast against that half-space: a body the solver
+//! pushes on into a thin wall is stopped there, one sliding along the wall
+//! or leaving it is not), and its group is stopped then. When the other
+//! body rotates too, or a shape's extent is not computed (heightfields,
+//! polylines, voxels), the pair is asked again with a smaller contact
+//! distance, and still touching, the rule is parry's static penetration
+//! depth at both ends (deeper at the end by more than the contact
+//! distance: the bodies are held at their start poses); that does not see
+//! a body pass right through a thin rotating body within one step.
+//! A swept body stopped early stands at its stop pose for the rest of the
+//! step: every swept body still moving then is cast against it there, and
+//! stopped at the hit, in rounds (`proofs/12-shapes.md`, Lemma 12.8).
 //!
-//! What it does not do: bodies stopped at different times (two groups, or
-//! a group and a body it never met) are each where their own motion put
-//! them; a body stopped early may stand where another passes later in the
-//! step (rapier's own clamping has the same limit; substeps remove it). Its
+//! What it does not do: a body without CCD (or kinematic) is where rapier
+//! put it, even where a stopped body stands. Its
 //! cost: each collider's motion and swept box once per step, then one cast
 //! per pair of colliders whose swept boxes meet, unless the balls bounding
 //! them about their motions' centres (which move on straight lines) never
@@ -71,7 +81,7 @@ use rapier3d_f64::math::{Pose, Vector};
 use rapier3d_f64::parry::query::NonlinearRigidMotion;
 use rapier3d_f64::pipeline::PhysicsWorld;
 
-use crate::f64::{CastError, CertifiedDispatcher, ShapeCache, Swept};
+use crate::f64::{CastError, CertifiedDispatcher, PastContact, ShapeCache, Swept};
 
 /// What one [`CertifiedPass::clamp`] did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -82,7 +92,8 @@ pub struct ClampStats {
     /// Bodies moved back to a time of impact.
     pub bodies: usize,
     /// Pairs touching at the start that the step would have left deeper:
-    /// their bodies held at the start.
+    /// their bodies stopped where they may start to go deeper (or held at
+    /// the start).
     pub held: usize,
     /// Casts the adapter could not answer (an unsupported shape or input):
     /// those pairs are left to rapier.
@@ -357,17 +368,47 @@ impl CertifiedPass {
                 let j = pb.body;
                 let (m1, m2) = (&pa.motion, &pb.motion);
                 stats.casts += 1;
-                match self
+                // First without re-asking: a pair within the contact
+                // distance at the start is `past_contact`'s, and only when
+                // that cannot decide is it asked again (as rapier's casts
+                // are) and, still touching, left to parry's depths.
+                let first = self
                     .dispatcher
-                    .cast_certified(m1, ci.shape(), m2, cj.shape(), 0.0, dt, true)
-                {
+                    .cast_first(m1, ci.shape(), m2, cj.shape(), 0.0, dt);
+                let first = match first {
+                    Ok(Some(hit)) if hit.time_of_impact <= 0.0 => {
+                        match self
+                            .dispatcher
+                            .past_contact(m1, ci.shape(), m2, cj.shape(), 0.0, dt)
+                        {
+                            PastContact::Never => continue,
+                            PastContact::At(t) => {
+                                stats.held += 1;
+                                hits.push((i, j, t));
+                                continue;
+                            }
+                            PastContact::Unknown => self.dispatcher.cast_certified(
+                                m1,
+                                ci.shape(),
+                                m2,
+                                cj.shape(),
+                                0.0,
+                                dt,
+                                true,
+                            ),
+                        }
+                    }
+                    other => other,
+                };
+                match first {
                     Ok(Some(hit)) if hit.time_of_impact > 0.0 => {
                         hits.push((i, j, hit.time_of_impact));
                     }
-                    // Touching at the start: a resting contact, the
-                    // solver's, unless the step would end it deeper
-                    // than it began (by more than the contact
-                    // distance): then the body is held at its start.
+                    // Touching at the start, the rule undecided (both
+                    // bodies rotating): a resting contact, the solver's,
+                    // unless the step would end it deeper than it began
+                    // (by more than the contact distance): then the body
+                    // is held at its start.
                     Ok(Some(_)) => {
                         let depth = |t: f64| {
                             parry3d_f64::query::contact(
@@ -392,7 +433,7 @@ impl CertifiedPass {
             }
         }
         if !hits.is_empty() {
-            self.stop_groups(bodies, &motions, &hits, &mut stats);
+            self.stop_groups(bodies, colliders, &motions, &hits, &mut stats, dt);
         }
         self.motions = motions;
         self.hits = hits;
@@ -400,13 +441,18 @@ impl CertifiedPass {
     }
 
     /// Moves the bodies of each group linked by `hits` back to the group's
-    /// earliest time of impact on its motion.
+    /// earliest time of impact on its motion, then stops, in rounds, every
+    /// swept body that would meet a body stopped before it (see
+    /// [`cascade`](Self::cascade)).
+    #[allow(clippy::too_many_arguments)]
     fn stop_groups(
         &self,
         bodies: &mut RigidBodySet,
+        colliders: &ColliderSet,
         motions: &[Option<NonlinearRigidMotion>],
         hits: &[(usize, Option<usize>, f64)],
         stats: &mut ClampStats,
+        dt: f64,
     ) {
         // Bodies linked by hits stop together, at their group's earliest
         // time: no pair of a group touches before it (each pair's cast
@@ -431,16 +477,108 @@ impl CertifiedPass {
             let r = root(&mut group, i);
             first[r] = first[r].min(t);
         }
-        for k in 0..self.before.len() {
-            let t = first[root(&mut group, k)];
+        // Each body's stop time (`INFINITY`: not stopped); only dynamic
+        // bodies with a motion are stopped.
+        let mut stop: Vec<f64> = (0..self.before.len())
+            .map(|k| {
+                let t = first[root(&mut group, k)];
+                let dynamic = bodies.get(self.before[k].0).is_some_and(|b| b.is_dynamic());
+                if t.is_finite() && dynamic && motions[k].is_some() {
+                    t
+                } else {
+                    f64::INFINITY
+                }
+            })
+            .collect();
+        self.cascade(colliders, &mut stop, dt);
+        for (k, &t) in stop.iter().enumerate() {
             let (true, Some(m)) = (t.is_finite(), &motions[k]) else {
                 continue;
             };
             if let Some(b) = bodies.get_mut(self.before[k].0) {
-                if b.is_dynamic() {
-                    b.set_position(m.position_at_time(t), true);
-                    stats.bodies += 1;
+                b.set_position(m.position_at_time(t), true);
+                stats.bodies += 1;
+            }
+        }
+    }
+
+    /// A body stopped at `stop[s]` stands at its pose then for the rest of
+    /// the step, where a body of another group, certified apart from it
+    /// only along its whole motion, may still pass. In rounds: each swept
+    /// body `x` still moving after a body `s` stopped in the last round
+    /// (`stop[x] > stop[s]`) is cast over `[stop[s], min(stop[x], dt)]`
+    /// against `s` standing still, and stopped at the hit (a new stop for
+    /// the next round). Times only decrease; before each its pairs were
+    /// certified apart (the first casts along the whole motions up to it,
+    /// then these). Still stopping bodies after 8 rounds (a long chain):
+    /// every swept body is held at the start (none moves, none passes).
+    fn cascade(&self, colliders: &ColliderSet, stop: &mut [f64], dt: f64) {
+        const ROUNDS: usize = 8;
+        let contact_distance = self.dispatcher.params().contact_distance;
+        let mut frontier: Vec<usize> = (0..stop.len()).filter(|&k| stop[k].is_finite()).collect();
+        let mut next = Vec::new();
+        for _ in 0..ROUNDS {
+            if frontier.is_empty() {
+                return;
+            }
+            next.clear();
+            for ps in &self.placed {
+                let Some(s) = ps.body else { continue };
+                if !frontier.contains(&s) {
+                    continue;
                 }
+                let ts = stop[s];
+                let pose = ps.motion.position_at_time(ts);
+                let Some(cs) = colliders.get(ps.handle) else {
+                    continue;
+                };
+                let still = NonlinearRigidMotion::constant_position(pose);
+                let boxed = cs.shape().compute_aabb(&pose).loosened(contact_distance);
+                for px in &self.placed {
+                    let Some(x) = px.body else { continue };
+                    if x == s || !self.before[x].2 || stop[x] <= ts || !px.swept.intersects(&boxed)
+                    {
+                        continue;
+                    }
+                    let Some(cx) = colliders.get(px.handle) else {
+                        continue;
+                    };
+                    let end = stop[x].min(dt);
+                    if end <= ts {
+                        continue;
+                    }
+                    let hit = self.dispatcher.cast_certified(
+                        &px.motion,
+                        cx.shape(),
+                        &still,
+                        cs.shape(),
+                        ts,
+                        end,
+                        true,
+                    );
+                    let t = match hit {
+                        Ok(Some(h)) => h.time_of_impact.max(ts),
+                        Ok(None) => continue,
+                        // Not answered: held where `s` stopped.
+                        Err(_) => ts,
+                    };
+                    if t < stop[x] {
+                        stop[x] = t;
+                        if !next.contains(&x) {
+                            next.push(x);
+                        }
+                    }
+                }
+            }
+            core::mem::swap(&mut frontier, &mut next);
+        }
+        if frontier.is_empty() {
+            return;
+        }
+        // Still stopping after the last round: nothing swept moves.
+        for (k, t) in stop.iter_mut().enumerate() {
+            if self.before[k].2 {
+                *t = 0.0;
             }
         }
     }

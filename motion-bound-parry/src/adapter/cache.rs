@@ -8,7 +8,7 @@ use std::sync::{Arc, Mutex, MutexGuard, PoisonError, Weak};
 
 use motion_bound::ca::{CaParams, MeshWorkspace};
 
-use super::cast::cast_bodies;
+use super::cast::{cast_bodies, RESOLVE_ATTEMPTS};
 use super::convert::Body;
 use super::error::CastError;
 use super::parry;
@@ -259,6 +259,35 @@ impl ShapeCache {
         stop_at_penetration: bool,
         params: &CaParams<Real>,
     ) -> Result<Option<ShapeCastHit>, CastError> {
+        self.cast_with_attempts(
+            motion1,
+            g1,
+            motion2,
+            g2,
+            start_time,
+            end_time,
+            stop_at_penetration,
+            params,
+            RESOLVE_ATTEMPTS,
+        )
+    }
+
+    /// [`cast_shapes_nonlinear`](Self::cast_shapes_nonlinear), a cast
+    /// starting within the contact distance asked again at most `attempts`
+    /// times (`0`: such a cast is a hit at the start).
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn cast_with_attempts(
+        &self,
+        motion1: &NonlinearRigidMotion,
+        g1: &dyn Shape,
+        motion2: &NonlinearRigidMotion,
+        g2: &dyn Shape,
+        start_time: Real,
+        end_time: Real,
+        stop_at_penetration: bool,
+        params: &CaParams<Real>,
+        attempts: u32,
+    ) -> Result<Option<ShapeCastHit>, CastError> {
         let b1 = self.body(g1)?;
         let b2 = self.body(g2)?;
         let ws = lock(&self.workspaces).pop().unwrap_or_default();
@@ -271,6 +300,7 @@ impl ShapeCache {
             end_time,
             stop_at_penetration,
             params,
+            attempts,
             ws,
         );
         lock(&self.workspaces).push(ws);

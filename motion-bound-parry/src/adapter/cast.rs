@@ -75,6 +75,7 @@ pub fn cast_shapes_nonlinear(
         end_time,
         stop_at_penetration,
         &CaParams::default(),
+        RESOLVE_ATTEMPTS,
         MeshWorkspace::new(),
     )
     .0
@@ -82,7 +83,7 @@ pub fn cast_shapes_nonlinear(
 
 /// How many times a cast starting within the contact distance, but apart,
 /// is asked again with a contact distance a quarter of the gap found.
-const RESOLVE_ATTEMPTS: u32 = 4;
+pub(super) const RESOLVE_ATTEMPTS: u32 = 4;
 
 /// The certified cast of two converted bodies, with the scratch space
 /// handed back.
@@ -96,6 +97,7 @@ pub(super) fn cast_bodies(
     end_time: Real,
     _stop_at_penetration: bool,
     params: &CaParams<Real>,
+    attempts: u32,
     ws: MeshWorkspace<Real>,
 ) -> (Result<Option<ShapeCastHit>, CastError>, MeshWorkspace<Real>) {
     if !start_time.is_finite() || !end_time.is_finite() {
@@ -141,7 +143,7 @@ pub(super) fn cast_bodies(
             // contact at `start_time` means touching (parry's meaning),
             // and the answer is still never later than the first contact.
             let mut p = *params;
-            for _ in 0..RESOLVE_ATTEMPTS {
+            for _ in 0..attempts {
                 let gap = match &r {
                     Ok(CaReport {
                         outcome: CaOutcome::InitialContact(c),

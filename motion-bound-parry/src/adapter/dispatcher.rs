@@ -10,6 +10,7 @@ use motion_bound::ca::CaParams;
 use super::cache::ShapeCache;
 use super::error::CastError;
 use super::parry;
+use super::past_contact::PastContact;
 use super::swept::Swept;
 use parry::math::{Pose, Real, Vector};
 use parry::query::{
@@ -158,6 +159,37 @@ impl CertifiedDispatcher {
     }
 }
 
+impl CertifiedDispatcher {
+    /// [`cast_certified`](Self::cast_certified) with no re-asking: shapes
+    /// within the contact distance at `start_time` are a hit at the start
+    /// (the pass decides those with `past_contact`).
+    #[allow(clippy::too_many_arguments)]
+    #[allow(dead_code)] // the rapier pass's: the f64 adapter's, with the `rapier` feature
+    pub(crate) fn cast_first(
+        &self,
+        motion1: &NonlinearRigidMotion,
+        g1: &dyn Shape,
+        motion2: &NonlinearRigidMotion,
+        g2: &dyn Shape,
+        start_time: Real,
+        end_time: Real,
+    ) -> Result<Option<ShapeCastHit>, CastError> {
+        let hit = self.cache.cast_with_attempts(
+            motion1,
+            g1,
+            motion2,
+            g2,
+            start_time,
+            end_time,
+            true,
+            &self.params,
+            0,
+        )?;
+        self.counters.certified.fetch_add(1, Ordering::Relaxed);
+        Ok(hit)
+    }
+}
+
 /// Both shapes with any [`Swept`] layers removed: what each query handed to
 /// parry's dispatcher gives it.
 fn seen<'a, 'b>(g1: &'a dyn Shape, g2: &'b dyn Shape) -> (&'a dyn Shape, &'b dyn Shape) {
@@ -238,6 +270,22 @@ impl QueryDispatcher for CertifiedDispatcher {
             end_time,
             stop_at_penetration,
         ) {
+            // Touching at the start, asked as rapier's CCD asks (a solid
+            // pair, `stop_at_penetration` off): rapier ignores a hit at the
+            // start, so the answer is whether the motion goes deeper
+            // (`past_contact`): no (sliding along or leaving: parry's
+            // answer for shapes moving out of a penetration), or the first
+            // time it may, which rapier clamps at.
+            Ok(Some(hit)) if !stop_at_penetration && hit.time_of_impact <= start_time => {
+                match self.past_contact(motion1, g1, motion2, g2, start_time, end_time) {
+                    PastContact::Never => Ok(None),
+                    PastContact::At(t) if t > start_time => Ok(Some(ShapeCastHit {
+                        time_of_impact: t,
+                        ..hit
+                    })),
+                    PastContact::At(_) | PastContact::Unknown => Ok(Some(hit)),
+                }
+            }
             Ok(hit) => Ok(hit),
             Err(_) => {
                 self.counters
