@@ -6,6 +6,7 @@ use alloc::vec;
 use alloc::vec::Vec;
 use core::fmt;
 
+use crate::geometry::gjk::ConvexPolytope;
 use crate::math::pose::mat_mul;
 use crate::{BallTree, Float, Pose, TriMesh, Vec3};
 
@@ -334,11 +335,15 @@ impl<T: Float> ChainBuilder<T> {
             let hull = mesh
                 .as_ref()
                 .map_or_else(Vec::new, |m| distinct(m.vertices()));
+            let hull_rho = ConvexPolytope::try_new(&hull, Pose::IDENTITY)
+                .ok()
+                .map(|p| p.radius_l1());
             links.push(LinkData {
                 name,
                 mesh,
                 tree,
                 hull,
+                hull_rho,
                 parent_joint: parent_joint[l],
                 path,
                 reach,
@@ -375,6 +380,10 @@ pub(crate) struct LinkData<T> {
     /// The mesh's distinct vertices (link frame): their convex hull holds
     /// every triangle, the cover of `proofs/13-chains.md`, Lemma 13.7.
     pub(crate) hull: Vec<[T; 3]>,
+    /// The hull's bound of its vertices' 1-norms, from
+    /// [`ConvexPolytope::try_new`] at build (`None`: no geometry, or a vertex
+    /// GJK refuses; the edge query then descends the tree alone).
+    pub(crate) hull_rho: Option<T>,
     pub(crate) parent_joint: Option<usize>,
     /// The movable joints from the root to the link, root first.
     pub(crate) path: Vec<usize>,

@@ -361,14 +361,17 @@ impl<T: Float> ChainScene<T> {
                 }
             }
         }
-        // Each link's hull (its distinct vertices), validated once: `None`
-        // for a link without geometry or with a vertex GJK refuses (the
-        // query then descends its tree alone).
+        // Each link's hull (its distinct vertices), validated when the chain
+        // was built: `None` for a link without geometry or with a vertex GJK
+        // refuses (the query then descends its tree alone).
         let hulls = self
             .chain
             .links
             .iter()
-            .map(|l| ConvexPolytope::try_new(&l.hull, Pose::IDENTITY).ok())
+            .map(|l| {
+                l.hull_rho
+                    .and_then(|rho| ConvexPolytope::with_radius(&l.hull, rho, Pose::IDENTITY).ok())
+            })
             .collect();
         EdgeChecker {
             scene: self,
