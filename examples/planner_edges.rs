@@ -261,6 +261,22 @@ fn main() -> Result<(), Error> {
                 );
             }
         }
+        if std::env::var_os("PE_WORK").is_some() {
+            let mut w = work.clone();
+            w.sort_unstable();
+            let tot: usize = w.iter().sum();
+            let top1: usize = w[w.len() * 99 / 100..].iter().sum();
+            let top10: usize = w[w.len() * 90 / 100..].iter().sum();
+            println!(
+                "  tests p50 {} p90 {} p99 {} max {}; share of top 1% {:.2}, top 10% {:.2}",
+                w[w.len() / 2],
+                w[w.len() * 9 / 10],
+                w[w.len() * 99 / 100],
+                w[w.len() - 1],
+                top1 as f64 / tot as f64,
+                top10 as f64 / tot as f64
+            );
+        }
         if std::env::var_os("PE_SPLIT").is_some() {
             let (mut tf, mut nf, mut tc, mut nc, mut t0, mut n0) = (0.0, 0, 0.0, 0, 0.0, 0);
             for (t, o) in times.iter().zip(&verdicts) {

@@ -26,6 +26,7 @@ use crate::chain::report::ChainPair;
 use crate::chain::segment::{take_motion, Segment, Work};
 use crate::chain::shapes::{node_points, triangle_points_gap, Against, Geometry, ShapeObstacle};
 use crate::geometry::closest::{point_triangle_vec, triangle_triangle_vec};
+use crate::geometry::gjk::{gjk_distance, ConvexPolytope, GjkParams};
 use crate::rounding::{add_up, diff_up, gamma, gap_down, mul_up, sum_up};
 use crate::{Float, Vec3};
 
@@ -166,6 +167,9 @@ pub(super) struct EdgeWork<T> {
 pub(super) struct Edge<'a, T: 'static> {
     pub(super) segment: Segment<'a, T>,
     pub(super) shapes: &'a [ShapeObstacle<T>],
+    /// Each link's convex hull (`None` without geometry): a link pair's
+    /// first cover (Lemma 13.7).
+    pub(super) hulls: &'a [Option<ConvexPolytope<'a, T>>],
     /// Contact distance plus padding: what a leaf's computed distance is
     /// declared touching at.
     pub(super) touch: T,
@@ -628,8 +632,76 @@ impl<T: Float> Edge<'_, T> {
                     sweeps[1] = mul_up(mb.dt, mb.sweep_speed(cb, nb.ball.radius()));
                 }
                 let sb = sweeps[1];
+                if it.node == 0 && k == 0 {
+                    if let Some(v) = self.hull_verdict(
+                        it.link,
+                        b,
+                        (ma, sa),
+                        (mb, sb),
+                        (ca, ra),
+                        (cb, nb.ball.radius()),
+                    ) {
+                        return v;
+                    }
+                }
                 self.node_pair(stats, (ta, it.node, ma, sa), (tb, k, mb, sb), (ca, ra))
             }
+        }
+    }
+
+    /// A pair of links at their roots, by their convex hulls (Lemma 13.7):
+    /// clear when the hulls' certified gap exceeds both sweeps and the
+    /// padding; kept whole for the interval's halves while that gap is
+    /// above the padding and at least a quarter of what clearing needs (two
+    /// halvings would then clear it, were the gap to stay); `None` (descend
+    /// the trees as before) otherwise: the hulls meet at the middle, or are
+    /// much nearer than the meshes (a link far from convex).
+    fn hull_verdict(
+        &self,
+        a: u32,
+        b: u32,
+        (ma, sa): (&LinkMotion<T>, T),
+        (mb, sb): (&LinkMotion<T>, T),
+        (ca, ra): (Vec3<T>, T),
+        (cb, rb): (Vec3<T>, T),
+    ) -> Option<Verdict> {
+        let need = add_up(add_up(sa, sb), self.padding);
+        // The balls first: what the trees' roots would test.
+        let balls = gap_down(
+            (cb - ca).length() - ra - rb,
+            ma.delta,
+            mb.delta,
+            ma.reach + mb.reach,
+        );
+        if balls > need {
+            return Some(Verdict::Clear);
+        }
+        let ha = self
+            .hulls
+            .get(a as usize)?
+            .as_ref()?
+            .with_pose(ma.pose)
+            .ok()?;
+        let hb = self
+            .hulls
+            .get(b as usize)?
+            .as_ref()?
+            .with_pose(mb.pose)
+            .ok()?;
+        let params = GjkParams::default()
+            .with_rel_tol(T::ONE / T::from_u32(8))
+            .with_max_iterations(24);
+        let r = gjk_distance(&ha, &hb, &params);
+        r.direction?;
+        // The hulls placed exactly by the computed poses are within each
+        // link's `delta` of the exact hulls (Lemma 13.7).
+        let gap = gap_down(r.lower_bound, ma.delta, mb.delta, ma.reach + mb.reach);
+        if gap > need {
+            Some(Verdict::Clear)
+        } else if gap > self.padding {
+            Some(Verdict::Keep)
+        } else {
+            None
         }
     }
 

@@ -6,6 +6,7 @@ use alloc::vec;
 use alloc::vec::Vec;
 use core::fmt;
 
+use crate::geometry::gjk::ConvexPolytope;
 use crate::math::pose::mat_mul;
 use crate::{BallTree, Float, Pose, TriMesh, Vec3};
 
@@ -331,10 +332,18 @@ impl<T: Float> ChainBuilder<T> {
             let reach = tree
                 .as_ref()
                 .map_or(T::ZERO, |t: &BallTree<T>| t.whole.reach);
+            let hull = mesh
+                .as_ref()
+                .map_or_else(Vec::new, |m| distinct(m.vertices()));
+            let hull_rho = ConvexPolytope::try_new(&hull, Pose::IDENTITY)
+                .ok()
+                .map(|p| p.radius_l1());
             links.push(LinkData {
                 name,
                 mesh,
                 tree,
+                hull,
+                hull_rho,
                 parent_joint: parent_joint[l],
                 path,
                 reach,
@@ -368,6 +377,13 @@ pub(crate) struct LinkData<T> {
     pub(crate) name: String,
     pub(crate) mesh: Option<TriMesh<T>>,
     pub(crate) tree: Option<BallTree<T>>,
+    /// The mesh's distinct vertices (link frame): their convex hull holds
+    /// every triangle, the cover of `proofs/13-chains.md`, Lemma 13.7.
+    pub(crate) hull: Vec<[T; 3]>,
+    /// The hull's bound of its vertices' 1-norms, from
+    /// [`ConvexPolytope::try_new`] at build (`None`: no geometry, or a vertex
+    /// GJK refuses; the edge query then descends the tree alone).
+    pub(crate) hull_rho: Option<T>,
     pub(crate) parent_joint: Option<usize>,
     /// The movable joints from the root to the link, root first.
     pub(crate) path: Vec<usize>,
@@ -376,6 +392,21 @@ pub(crate) struct LinkData<T> {
     pub(crate) reach: T,
     /// The sum of the joint origins' lengths from the root to the link.
     pub(crate) origin_reach: T,
+}
+
+/// The distinct points of `vertices` (exact duplicates removed: a mesh
+/// stored as a triangle soup repeats each corner), in some order.
+fn distinct<T: Float>(vertices: &[[T; 3]]) -> Vec<[T; 3]> {
+    let mut out = vertices.to_vec();
+    let key = |v: &[T; 3]| v.map(T::to_f64);
+    out.sort_unstable_by(|a, b| {
+        let (a, b) = (key(a), key(b));
+        a[0].total_cmp(&b[0])
+            .then(a[1].total_cmp(&b[1]))
+            .then(a[2].total_cmp(&b[2]))
+    });
+    out.dedup_by(|a, b| key(a) == key(b));
+    out
 }
 
 /// A kinematic tree: links with collision meshes (each with its ball tree,

@@ -21,8 +21,9 @@ use crate::chain::report::{
 };
 use crate::chain::segment::{Segment, Work};
 use crate::chain::shapes::ShapeObstacle;
+use crate::geometry::gjk::ConvexPolytope;
 use crate::rounding::gamma;
-use crate::Float;
+use crate::{Float, Pose};
 
 /// A chain in still surroundings: what a planner's motion validator asks
 /// about. Pairs of adjacent links (joined by one joint, or rigidly through
@@ -360,10 +361,23 @@ impl<T: Float> ChainScene<T> {
                 }
             }
         }
+        // Each link's hull (its distinct vertices), validated when the chain
+        // was built: `None` for a link without geometry or with a vertex GJK
+        // refuses (the query then descends its tree alone).
+        let hulls = self
+            .chain
+            .links
+            .iter()
+            .map(|l| {
+                l.hull_rho
+                    .and_then(|rho| ConvexPolytope::with_radius(&l.hull, rho, Pose::IDENTITY).ok())
+            })
+            .collect();
         EdgeChecker {
             scene: self,
             initial,
             slots,
+            hulls,
             work: EdgeWork::default(),
         }
     }
@@ -612,6 +626,8 @@ pub struct EdgeChecker<'s, T: 'static> {
     initial: Vec<Item>,
     /// The motion slots: a link and how many of its path's joints skipped.
     slots: Vec<(usize, usize)>,
+    /// Each link's convex hull (Lemma 13.7).
+    hulls: Vec<Option<ConvexPolytope<'s, T>>>,
     work: EdgeWork<T>,
 }
 
@@ -637,6 +653,7 @@ impl<T: Float> EdgeChecker<'_, T> {
         let edge = Edge {
             segment: scene.segment_view(q0, q1),
             shapes: &scene.shapes,
+            hulls: &self.hulls,
             touch: scene.params.contact_distance + scene.params.padding,
             padding: scene.params.padding,
             budget: scene.params.edge_budget,
@@ -656,6 +673,7 @@ impl<T: Float> EdgeChecker<'_, T> {
         let edge = Edge {
             segment: scene.segment_view(q, q),
             shapes: &scene.shapes,
+            hulls: &self.hulls,
             touch: scene.params.padding,
             padding: scene.params.padding,
             budget: usize::MAX,

@@ -143,6 +143,27 @@ impl<'a, T: Float> ConvexPolytope<'a, T> {
         Self::placed(self.vertices, self.rho, pose)
     }
 
+    /// The bound `rho` of the vertices' 1-norms, for
+    /// [`with_radius`](Self::with_radius) (crate-internal: a validated
+    /// polytope's vertices made again without reading them).
+    #[cfg(feature = "alloc")]
+    #[inline]
+    pub(crate) const fn radius_l1(&self) -> T {
+        self.rho
+    }
+
+    /// Vertices already validated by [`try_new`](Self::try_new), with the
+    /// `rho` it computed ([`radius_l1`](Self::radius_l1)), at `pose`
+    /// (`O(1)`; the pose is checked as in [`with_pose`](Self::with_pose)).
+    #[cfg(feature = "alloc")]
+    pub(crate) fn with_radius(
+        vertices: &'a [[T; 3]],
+        rho: T,
+        pose: Pose<T>,
+    ) -> Result<Self, InputError> {
+        Self::placed(vertices, rho, pose)
+    }
+
     fn placed(vertices: &'a [[T; 3]], rho: T, pose: Pose<T>) -> Result<Self, InputError> {
         for row in pose.rotation {
             check_components(row, Quantity::Pose)?;
