@@ -86,7 +86,7 @@ fn verdict<T: Handle>(found: Option<Kind>, what: &str) -> Res<()> {
             MbStatus::InvalidHandle,
             format!(
                 "{what} is a handle of another type (not {})",
-                T::NAME.trim_start_matches("the ")
+                T::NAME.replacen("the ", "a ", 1)
             ),
         )),
         None => Err(Failure::new(
