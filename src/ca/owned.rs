@@ -215,7 +215,7 @@ impl<T: Float + 'static> OwnedCompound<T> {
 /// let faces = vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
 /// let mesh = OwnedShape::try_mesh(tet, faces, None, ["vertices", "faces", "solid"])?;
 /// let at = Isometry::try_from_translation([3.0, 0.0, 0.0].into())?;
-/// let both = OwnedShape::try_compound([(&ball, at), (&mesh, Isometry::identity())])?;
+/// let both = OwnedShape::try_compound([(&ball, at), (&mesh, Isometry::IDENTITY)])?;
 /// // Lend them to a query.
 /// let (a, b) = (ball.prepare()?, both.prepare()?);
 /// let _pair = AnyPair::try_new(a.shape(), b.shape())?;
