@@ -76,6 +76,17 @@ pub struct Hull<T> {
 }
 
 impl<T: Float> Hull<T> {
+    /// The hull of `points` rounded by `rounding` (for an adapter with its
+    /// own errors; [`OwnedShape::try_hull`] names the bad argument).
+    ///
+    /// # Errors
+    /// No point, a bad point, a negative, NaN or infinite rounding.
+    pub fn try_new(points: Vec<[T; 3]>, rounding: T) -> Result<Self, InputError> {
+        let hull = Self { points, rounding };
+        hull.convex(None)?;
+        Ok(hull)
+    }
+
     /// The points.
     #[must_use]
     pub fn points(&self) -> &[[T; 3]] {
@@ -122,6 +133,17 @@ impl<T: Float> OwnedMesh<T> {
     #[must_use]
     pub const fn tree(&self) -> &BallTree<T> {
         &self.tree
+    }
+
+    /// The mesh as it is (solid or hollow) with its tree (for an adapter
+    /// with its own errors; [`OwnedShape::try_mesh`] names the bad
+    /// argument).
+    ///
+    /// # Errors
+    /// As [`BallTree::try_from_mesh`].
+    pub fn try_from_mesh(mesh: TriMesh<T>) -> Result<Self, InputError> {
+        let tree = BallTree::try_from_mesh(&mesh)?;
+        Ok(Self { mesh, tree })
     }
 
     fn try_new(
@@ -279,8 +301,7 @@ impl<T: Float + 'static> OwnedShape<T> {
     pub fn try_hull(points: Vec<[T; 3]>, rounding: T) -> Result<Self, ArgError> {
         ArgError::length(rounding, "rounding")?;
         VertexSet::try_new(&points).map_err(ArgError::input("points"))?;
-        let hull = Hull { points, rounding };
-        hull.convex(None).map_err(ArgError::input("rounding"))?;
+        let hull = Hull::try_new(points, rounding).map_err(ArgError::input("rounding"))?;
         Ok(Self::Hull(hull))
     }
 
@@ -343,8 +364,17 @@ impl<T: Float + 'static> OwnedShape<T> {
                 Self::Compound(_) => return Err(ArgError::new(arg, Problem::NotAPart("compound"))),
             });
         }
-        let c = OwnedCompound { parts: owned };
-        c.compound().map_err(ArgError::input("parts"))?;
+        Self::try_compound_of(owned).map_err(ArgError::input("parts"))
+    }
+
+    /// The compound of `parts`, each already in the compound's frame (for
+    /// an adapter that places its parts itself).
+    ///
+    /// # Errors
+    /// [`InputError::EmptyCompound`] for no part; a reach beyond the range.
+    pub fn try_compound_of(parts: Vec<OwnedPart<T>>) -> Result<Self, InputError> {
+        let c = OwnedCompound { parts };
+        c.compound()?;
         Ok(Self::Compound(c))
     }
 
