@@ -1,6 +1,7 @@
 # CMake package configuration of motion-bound-c, installed by install.sh as
 # <prefix>/lib/cmake/motion_bound/motion_boundConfig.cmake. In a C or C++ project:
-#   find_package(motion_bound REQUIRED)          # with -DCMAKE_PREFIX_PATH=<prefix>
+#   find_package(motion_bound 0.1 REQUIRED)      # with -DCMAKE_PREFIX_PATH=<prefix>
+# (the version is checked by motion_boundConfigVersion.cmake: 0.1.z serves a request for 0.1)
 #   target_link_libraries(app PRIVATE motion_bound::motion_bound)
 # motion_bound::motion_bound is the static library (with the system libraries it needs);
 # motion_bound::shared is the shared one.

@@ -661,6 +661,29 @@ typedef struct mb_report {
 } mb_report;
 
 /**
+ * One query of a batch (`mb_time_of_impact_batch`): two shapes and their
+ * motions, as `mb_time_of_impact` takes them.
+ */
+typedef struct mb_pair_query {
+  /**
+   * The first body's shape.
+   */
+  const struct mb_shape *shape_a;
+  /**
+   * The first body's motion.
+   */
+  const struct mb_motion *motion_a;
+  /**
+   * The second body's shape.
+   */
+  const struct mb_shape *shape_b;
+  /**
+   * The second body's motion (over the same interval).
+   */
+  const struct mb_motion *motion_b;
+} mb_pair_query;
+
+/**
  * One pair of a scene query's answer.
  */
 typedef struct mb_scene_pair {
@@ -1235,6 +1258,31 @@ enum mb_status mb_time_of_impact(const struct mb_shape *shape_a,
                                  struct mb_report *out);
 
 /**
+ * Many pair queries on every core: `queries[k]` answered in `out[k]` for
+ * `k < count`, each exactly as `mb_time_of_impact` answers it (the same
+ * report, bit for bit), with one `params` for all (`NULL` for the
+ * defaults). The queries run on a pool of one thread per core (rayon's
+ * global pool: `RAYON_NUM_THREADS` sets its size); the call returns when
+ * all are done. `count == 0` does nothing.
+ *
+ * Errors as `mb_time_of_impact`, the message naming the query
+ * (`queries[3].shape_a is NULL`); on any error nothing is written to `out`
+ * (the first failing query, by index, is the one reported).
+ *
+ * **Thread safety**: any thread; the handles may be shared between
+ * queries and with other threads' queries.
+ *
+ * # Safety
+ * `queries` is `NULL` or valid for reading `count` queries, whose handles
+ * are not freed during the call; `params` is `NULL` or valid for reading
+ * an `mb_params`; `out` is `NULL` or valid for writing `count` reports.
+ */
+enum mb_status mb_time_of_impact_batch(const struct mb_pair_query *queries,
+                                       size_t count,
+                                       const struct mb_params *params,
+                                       struct mb_report *out);
+
+/**
  * A new empty scene over `[0, duration]`, written to `*out`.
  * `MB_STATUS_INVALID_INPUT` for a duration that is not positive and finite.
  *
@@ -1467,7 +1515,10 @@ enum mb_status mb_shape_half_space(struct mb_vec3 normal, struct mb_shape **out)
  * (not half-spaces or compounds); they are copied (a mesh's tree is
  * rebuilt at its pose), so the parts may be freed afterwards.
  * `MB_STATUS_INVALID_SIZE` for `count == 0`, `MB_STATUS_INVALID_INPUT` for a
- * half-space or compound part or a bad pose.
+ * half-space or compound part or a bad pose. `parts` is an array of the
+ * handles as made (`mb_shape *parts[]`: C does not convert `mb_shape **`
+ * to `const mb_shape *const *` without a warning; the parts are only
+ * read).
  *
  * **Thread safety**: any thread; the parts may be shared.
  *
@@ -1476,7 +1527,7 @@ enum mb_status mb_shape_half_space(struct mb_vec3 normal, struct mb_shape **out)
  * parts are not freed during the call; `out` is `NULL` or valid for
  * writing a pointer.
  */
-enum mb_status mb_shape_compound(const struct mb_shape *const *parts,
+enum mb_status mb_shape_compound(struct mb_shape *const *parts,
                                  const struct mb_pose *poses,
                                  size_t count,
                                  struct mb_shape **out);

@@ -24,7 +24,8 @@ use crate::ptr::{
     free_handle, handle_mut, handle_ref, read_in, slice_from, write_handle, write_out, Handle,
     Kind, Plain,
 };
-use crate::shape::{Data, MbShape};
+use crate::shape::MbShape;
+use motion_bound::ca::OwnedShape;
 
 /// A kinematic tree read from a URDF: its links' collision meshes (each
 /// with its ball tree, built once) and its revolute, continuous, prismatic
@@ -289,8 +290,8 @@ unsafe fn bytes_out<'a>(ptr: *mut u8, len: usize, what: &str) -> Res<&'a mut [u8
 }
 
 /// The crate's pose of an ABI pose.
-fn pose(p: MbPose) -> Res<Pose<f64>> {
-    let iso = p.isometry()?;
+fn pose(p: MbPose, what: &str) -> Res<Pose<f64>> {
+    let iso = p.isometry(what)?;
     Ok(Pose {
         rotation: iso.rotation().matrix(),
         translation: iso.translation(),
@@ -516,7 +517,7 @@ pub unsafe extern "C" fn mb_chain_from_urdf_string(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn mb_chain_free(chain: *mut MbChain) -> MbStatus {
     // SAFETY: this function's contract.
-    guard(|| unsafe { free_handle(chain) })
+    guard(|| unsafe { free_handle(chain, "chain") })
 }
 
 /// The chain's number of joint coordinates (its movable joints), written
@@ -531,7 +532,7 @@ pub unsafe extern "C" fn mb_chain_free(chain: *mut MbChain) -> MbStatus {
 pub unsafe extern "C" fn mb_chain_dof(chain: *const MbChain, out: *mut usize) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        unsafe { write_out(out, handle_ref(chain)?.chain.dof(), "out") }
+        unsafe { write_out(out, handle_ref(chain, "chain")?.chain.dof(), "out") }
     })
 }
 
@@ -545,7 +546,7 @@ pub unsafe extern "C" fn mb_chain_dof(chain: *const MbChain, out: *mut usize) ->
 pub unsafe extern "C" fn mb_chain_link_count(chain: *const MbChain, out: *mut usize) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        unsafe { write_out(out, handle_ref(chain)?.chain.link_count(), "out") }
+        unsafe { write_out(out, handle_ref(chain, "chain")?.chain.link_count(), "out") }
     })
 }
 
@@ -565,7 +566,7 @@ pub unsafe extern "C" fn mb_chain_link_index(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let (c, name) = unsafe { (handle_ref(chain)?, required_str(name, "name")?) };
+        let (c, name) = unsafe { (handle_ref(chain, "chain")?, required_str(name, "name")?) };
         let i = c.chain.link_index(name).map_err(|_| {
             Failure::new(
                 MbStatus::UnknownName,
@@ -594,7 +595,7 @@ pub unsafe extern "C" fn mb_chain_link_name(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let c = unsafe { handle_ref(chain) }?;
+        let c = unsafe { handle_ref(chain, "chain") }?;
         let name = c.link_names.get(index).ok_or_else(|| {
             Failure::new(
                 MbStatus::OutOfRange,
@@ -627,7 +628,7 @@ pub unsafe extern "C" fn mb_chain_limits(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let c = unsafe { handle_ref(chain) }?;
+        let c = unsafe { handle_ref(chain, "chain") }?;
         if dof != c.chain.dof() {
             return Err(Failure::new(
                 MbStatus::InvalidSize,
@@ -674,7 +675,7 @@ pub unsafe extern "C" fn mb_chain_scene_new(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let c = unsafe { handle_ref(chain) }?;
+        let c = unsafe { handle_ref(chain, "chain") }?;
         let s = MbChainScene {
             scene: ChainScene::new(c.chain.clone()),
             link_names: c.link_names.clone(),
@@ -696,7 +697,7 @@ pub unsafe extern "C" fn mb_chain_scene_new(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn mb_chain_scene_free(scene: *mut MbChainScene) -> MbStatus {
     // SAFETY: this function's contract.
-    guard(|| unsafe { free_handle(scene) })
+    guard(|| unsafe { free_handle(scene, "scene") })
 }
 
 /// The default parameters (`contact_distance` 1e-3, `padding` 0,
@@ -730,7 +731,7 @@ pub unsafe extern "C" fn mb_chain_scene_set_params(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let (s, p) = unsafe { (handle_mut(scene)?, read_in(params, "params")?) };
+        let (s, p) = unsafe { (handle_mut(scene, "scene")?, read_in(params, "params")?) };
         let p = p.unwrap_or_else(|| mb_chain_params_default());
         let bad = |field: &str, rule: &str, got: String| {
             Err(Failure::new(
@@ -794,25 +795,29 @@ pub unsafe extern "C" fn mb_chain_scene_add_obstacle(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let (s, sh, name) =
-            unsafe { (handle_mut(scene)?, handle_ref(shape)?, c_str(name, "name")?) };
+        let (s, sh, name) = unsafe {
+            (
+                handle_mut(scene, "scene")?,
+                handle_ref(shape, "shape")?,
+                c_str(name, "name")?,
+            )
+        };
         let name = s.name(name);
-        let at =
-            self::pose(pose).map_err(|f| Failure::new(f.status, format!("pose: {}", f.message)))?;
+        let at = self::pose(pose, "pose")?;
         let what = |e| chain_failure(e, "pose");
         let owner = s.added;
         match &*sh.data {
-            Data::Convex(c) => {
+            OwnedShape::Convex(c) => {
                 s.scene
                     .add_shape(ShapeObstacle::try_new(name, *c, at).map_err(what)?);
                 s.shape_owner.push(owner);
             }
-            Data::Mesh(m) => {
+            OwnedShape::Mesh(m) => {
                 s.scene
-                    .add_obstacle(Obstacle::try_new(name, m.mesh.clone(), at).map_err(what)?);
+                    .add_obstacle(Obstacle::try_new(name, m.mesh().clone(), at).map_err(what)?);
                 s.mesh_owner.push(owner);
             }
-            Data::HalfSpace(h) => {
+            OwnedShape::HalfSpace(h) => {
                 let n = at.transform_vector(h.normal().get());
                 s.scene.add_shape(
                     ShapeObstacle::try_half_space(name, n.to_array(), at.translation.to_array())
@@ -820,18 +825,26 @@ pub unsafe extern "C" fn mb_chain_scene_add_obstacle(
                 );
                 s.shape_owner.push(owner);
             }
-            Data::Hull(_) => {
+            OwnedShape::Hull(_) => {
                 return Err(Failure::new(
                     MbStatus::QueryError,
                     "shape: a convex hull is not a chain scene obstacle; give its triangles as \
                      mb_shape_mesh",
                 ))
             }
-            Data::Compound(_) => {
+            OwnedShape::Compound(_) => {
                 return Err(Failure::new(
                     MbStatus::QueryError,
                     "shape: a compound is not a chain scene obstacle; add its parts one by one \
                      at their poses",
+                ))
+            }
+            // `OwnedShape` is `#[non_exhaustive]`: a kind added later is refused until it
+            // is mapped here.
+            _ => {
+                return Err(Failure::new(
+                    MbStatus::QueryError,
+                    "shape: this kind of shape is not a chain scene obstacle",
                 ))
             }
         }
@@ -870,7 +883,7 @@ pub unsafe extern "C" fn mb_chain_scene_add_points(
         // SAFETY: this function's contract.
         let (s, pts, name) = unsafe {
             (
-                handle_mut(scene)?,
+                handle_mut(scene, "scene")?,
                 slice_from(points, count, "points")?,
                 c_str(name, "name")?,
             )
@@ -933,7 +946,7 @@ pub unsafe extern "C" fn mb_chain_scene_allow_collision(
         // SAFETY: this function's contract.
         let (s, a, b) = unsafe {
             (
-                handle_mut(scene)?,
+                handle_mut(scene, "scene")?,
                 required_str(link_a, "link_a")?,
                 required_str(link_b, "link_b")?,
             )
@@ -966,7 +979,7 @@ pub unsafe extern "C" fn mb_chain_scene_allow_collisions_at(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let s = unsafe { handle_mut(scene) }?;
+        let s = unsafe { handle_mut(scene, "scene") }?;
         // SAFETY: this function's contract.
         let q = unsafe { coordinates(s.scene.chain(), q, dof, false, "q") }?;
         if !(distance.is_finite() && distance >= 0.0) {
@@ -1008,7 +1021,7 @@ pub unsafe extern "C" fn mb_chain_scene_checks_pair(
         // SAFETY: this function's contract.
         let (s, a, b) = unsafe {
             (
-                handle_ref(scene)?,
+                handle_ref(scene, "scene")?,
                 required_str(link_a, "link_a")?,
                 required_str(link_b, "link_b")?,
             )
@@ -1035,7 +1048,7 @@ pub unsafe extern "C" fn mb_chain_scene_link_name(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let s = unsafe { handle_ref(scene) }?;
+        let s = unsafe { handle_ref(scene, "scene") }?;
         let name = s.link_names.get(index).ok_or_else(|| {
             Failure::new(
                 MbStatus::OutOfRange,
@@ -1075,7 +1088,7 @@ pub unsafe extern "C" fn mb_chain_scene_edge_is_free(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let s = unsafe { handle_ref(scene) }?;
+        let s = unsafe { handle_ref(scene, "scene") }?;
         let (chain, lim) = (s.scene.chain(), s.limits());
         // SAFETY: this function's contract.
         let (a, b) = unsafe {
@@ -1119,7 +1132,7 @@ pub unsafe extern "C" fn mb_chain_scene_edges_are_free(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let s = unsafe { handle_ref(scene) }?;
+        let s = unsafe { handle_ref(scene, "scene") }?;
         let chain = s.scene.chain();
         if dof != chain.dof() {
             return Err(Failure::new(
@@ -1237,7 +1250,7 @@ pub unsafe extern "C" fn mb_chain_scene_check_edge(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let s = unsafe { handle_ref(scene) }?;
+        let s = unsafe { handle_ref(scene, "scene") }?;
         let (chain, lim) = (s.scene.chain(), s.limits());
         // SAFETY: this function's contract.
         let (a, b) = unsafe {
@@ -1296,7 +1309,7 @@ pub unsafe extern "C" fn mb_chain_scene_check_segment(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let s = unsafe { handle_ref(scene) }?;
+        let s = unsafe { handle_ref(scene, "scene") }?;
         let (chain, lim) = (s.scene.chain(), s.limits());
         // SAFETY: this function's contract.
         let (a, b) = unsafe {
@@ -1383,7 +1396,7 @@ pub unsafe extern "C" fn mb_chain_scene_collides_at(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let s = unsafe { handle_ref(scene) }?;
+        let s = unsafe { handle_ref(scene, "scene") }?;
         // SAFETY: this function's contract.
         let q = unsafe { coordinates(s.scene.chain(), q, dof, false, "q") }?;
         let hit = s.scene.collides_at(q).map_err(|e| chain_failure(e, "q"))?;
@@ -1414,7 +1427,7 @@ pub unsafe extern "C" fn mb_chain_scene_clearance(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: this function's contract.
-        let s = unsafe { handle_ref(scene) }?;
+        let s = unsafe { handle_ref(scene, "scene") }?;
         // SAFETY: this function's contract.
         let q = unsafe { coordinates(s.scene.chain(), q, dof, false, "q") }?;
         s.meshes_only("mb_chain_scene_clearance")?;

@@ -75,6 +75,42 @@ impl From<motion_bound::InputError> for Failure {
     }
 }
 
+impl From<motion_bound::ca::ArgError> for Failure {
+    fn from(e: motion_bound::ca::ArgError) -> Self {
+        use motion_bound::ca::Problem;
+        use motion_bound::{InputError, MeshError};
+        let status = match e.problem() {
+            Problem::Mesh(MeshError::Vertex(_)) => MbStatus::InvalidInput,
+            Problem::Mesh(_)
+            | Problem::Input(
+                InputError::NoTriangles | InputError::TriangleIndexOutOfRange { .. },
+            ) => MbStatus::InvalidMesh,
+            _ => MbStatus::InvalidInput,
+        };
+        Self::new(status, e.to_string())
+    }
+}
+
+/// The core's refusal of a motion's input, named by the C argument it came
+/// in (the quantity it is about says which).
+pub(crate) fn motion_input(e: motion_bound::InputError) -> Failure {
+    use motion_bound::{InputError as E, Quantity as Q};
+    let q = match e {
+        E::NonFinite(q) | E::TooLarge(q) => Some(q),
+        _ => None,
+    };
+    let arg = match (e, q) {
+        (_, Some(Q::LinearVelocity)) => "linear",
+        (_, Some(Q::AngularVelocity)) => "angular",
+        (_, Some(Q::Centre)) => "centre",
+        (_, Some(Q::LocalCentre)) => "local_centre",
+        (_, Some(Q::Orientation)) | (E::ZeroQuaternion, _) => "rotation",
+        (E::NonPositiveDuration, _) | (_, Some(Q::Duration | Q::Time)) => "duration",
+        _ => "start, end",
+    };
+    motion_bound::ca::ArgError::input(arg)(e).into()
+}
+
 impl From<motion_bound::MeshError> for Failure {
     fn from(e: motion_bound::MeshError) -> Self {
         match e {

@@ -2,7 +2,9 @@
 
 use motion_bound::{BodyPoint, Isometry, Point3, RigidMotion, Rotation, Vec3};
 
-use crate::error::{guard, Failure, MbStatus, Res};
+use motion_bound::ca::ArgError;
+
+use crate::error::{guard, motion_input, MbStatus, Res};
 use crate::ptr::{free_handle, handle_ref, write_handle, write_out, Handle, Plain};
 
 /// A vector or point `(x, y, z)`.
@@ -54,6 +56,15 @@ impl MbVec3 {
         Vec3::new(self.x, self.y, self.z)
     }
 
+    /// The vector of the argument `what`, its components finite (else an
+    /// error naming the component: `linear.y`).
+    pub(crate) fn checked(self, what: &str) -> Res<Vec3<f64>> {
+        for (c, x) in ["x", "y", "z"].iter().zip(self.array()) {
+            ArgError::finite(x, &format!("{what}.{c}"))?;
+        }
+        Ok(self.vec())
+    }
+
     pub(crate) const fn array(self) -> [f64; 3] {
         [self.x, self.y, self.z]
     }
@@ -68,19 +79,29 @@ impl MbVec3 {
 }
 
 impl MbQuat {
-    pub(crate) fn rotation(self) -> Res<Rotation<f64>> {
-        Ok(Rotation::try_from_quaternion(
-            self.w, self.x, self.y, self.z,
-        )?)
+    /// The rotation of the argument `what`; errors name it (and the
+    /// component: `start.rotation.w`).
+    pub(crate) fn rotation(self, what: &str) -> Res<Rotation<f64>> {
+        for (c, x) in ["w", "x", "y", "z"]
+            .iter()
+            .zip([self.w, self.x, self.y, self.z])
+        {
+            ArgError::finite(x, &format!("{what}.{c}"))?;
+        }
+        Ok(
+            Rotation::try_from_quaternion(self.w, self.x, self.y, self.z)
+                .map_err(ArgError::input(what))?,
+        )
     }
 }
 
 impl MbPose {
-    pub(crate) fn isometry(self) -> Res<Isometry<f64>> {
-        Ok(Isometry::try_new(
-            self.rotation.rotation()?,
-            self.translation.vec(),
-        )?)
+    /// The placement of the argument `what` (`start`, `poses[2]`); errors
+    /// name it and the field (`start.translation.x`, `poses[2].rotation`).
+    pub(crate) fn isometry(self, what: &str) -> Res<Isometry<f64>> {
+        let r = self.rotation.rotation(&format!("{what}.rotation"))?;
+        let t = self.translation.checked(&format!("{what}.translation"))?;
+        Ok(Isometry::try_new(r, t).map_err(ArgError::input(what))?)
     }
 }
 
@@ -119,8 +140,14 @@ pub unsafe extern "C" fn mb_motion_from_velocities(
     out: *mut *mut MbMotion,
 ) -> MbStatus {
     guard(|| {
+        let (start, linear, angular) = (
+            start.isometry("start")?,
+            linear.checked("linear")?,
+            angular.checked("angular")?,
+        );
+        ArgError::positive(duration, "duration")?;
         let motion =
-            RigidMotion::try_from_start(start.isometry()?, linear.vec(), angular.vec(), duration)?;
+            RigidMotion::try_from_start(start, linear, angular, duration).map_err(motion_input)?;
         // SAFETY: `out` is NULL or writable (this function's contract).
         unsafe { write_handle(out, MbMotion { motion }) }
     })
@@ -146,7 +173,9 @@ pub unsafe extern "C" fn mb_motion_between(
     out: *mut *mut MbMotion,
 ) -> MbStatus {
     guard(|| {
-        let motion = RigidMotion::try_between(start.isometry()?, end.isometry()?, duration)?;
+        let (start, end) = (start.isometry("start")?, end.isometry("end")?);
+        ArgError::positive(duration, "duration")?;
+        let motion = RigidMotion::try_between(start, end, duration).map_err(motion_input)?;
         // SAFETY: `out` is NULL or writable (this function's contract).
         unsafe { write_handle(out, MbMotion { motion }) }
     })
@@ -169,12 +198,11 @@ pub unsafe extern "C" fn mb_motion_between_about(
     out: *mut *mut MbMotion,
 ) -> MbStatus {
     guard(|| {
-        let motion = RigidMotion::try_between_about(
-            start.isometry()?,
-            end.isometry()?,
-            duration,
-            local_centre.vec(),
-        )?;
+        let (start, end) = (start.isometry("start")?, end.isometry("end")?);
+        ArgError::positive(duration, "duration")?;
+        let local = local_centre.checked("local_centre")?;
+        let motion =
+            RigidMotion::try_between_about(start, end, duration, local).map_err(motion_input)?;
         // SAFETY: `out` is NULL or writable (this function's contract).
         unsafe { write_handle(out, MbMotion { motion }) }
     })
@@ -204,14 +232,14 @@ pub unsafe extern "C" fn mb_motion_about_centre(
     out: *mut *mut MbMotion,
 ) -> MbStatus {
     guard(|| {
-        let motion = RigidMotion::try_about_centre(
-            Point3::from_array(centre.array()),
-            local_centre.vec(),
-            rotation.rotation()?,
-            linear.vec(),
-            angular.vec(),
-            duration,
-        )?;
+        let centre = Point3::from_array(centre.checked("centre")?.to_array());
+        let local = local_centre.checked("local_centre")?;
+        let rotation = rotation.rotation("rotation")?;
+        let (linear, angular) = (linear.checked("linear")?, angular.checked("angular")?);
+        ArgError::positive(duration, "duration")?;
+        let motion =
+            RigidMotion::try_about_centre(centre, local, rotation, linear, angular, duration)
+                .map_err(motion_input)?;
         // SAFETY: `out` is NULL or writable (this function's contract).
         unsafe { write_handle(out, MbMotion { motion }) }
     })
@@ -236,13 +264,9 @@ pub unsafe extern "C" fn mb_motion_point_at(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: `motion` is not freed during the call (this function's contract).
-        let m = unsafe { handle_ref(motion) }?;
-        if !t.is_finite() || !body_point.array().iter().all(|c| c.is_finite()) {
-            return Err(Failure::new(
-                MbStatus::InvalidInput,
-                "the time and the body point must be finite",
-            ));
-        }
+        let m = unsafe { handle_ref(motion, "motion") }?;
+        body_point.checked("body_point")?;
+        ArgError::finite(t, "t")?;
         let p = m
             .motion
             .point_at(BodyPoint::new(body_point.x, body_point.y, body_point.z), t);
@@ -262,5 +286,5 @@ pub unsafe extern "C" fn mb_motion_point_at(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn mb_motion_free(motion: *mut MbMotion) -> MbStatus {
     // SAFETY: no other thread uses `motion` (this function's contract).
-    guard(|| unsafe { free_handle(motion) })
+    guard(|| unsafe { free_handle(motion, "motion") })
 }

@@ -46,6 +46,8 @@ unsafe impl Plain for f64 {}
 unsafe impl Plain for u32 {}
 // SAFETY: any address is a valid raw pointer value (it is checked before use).
 unsafe impl<T> Plain for *const T {}
+// SAFETY: as above.
+unsafe impl<T> Plain for *mut T {}
 
 /// The addresses of the live handles (as [`key`]s), with their types.
 static LIVE: RwLock<BTreeMap<usize, Kind>> = RwLock::new(BTreeMap::new());
@@ -78,39 +80,43 @@ fn null(what: &str) -> Failure {
 
 /// Why `found` (the registry's entry for a handle of type `T`, if any) is not
 /// a live `T`, or `Ok`.
-fn verdict<T: Handle>(found: Option<Kind>) -> Res<()> {
+/// The messages name the argument `what` (`shape_a`, `parts[2]`).
+fn verdict<T: Handle>(found: Option<Kind>, what: &str) -> Res<()> {
     match found {
         Some(k) if k == T::KIND => Ok(()),
         Some(_) => Err(Failure::new(
             MbStatus::InvalidHandle,
-            format!("the handle passed as {} is of another type", T::NAME),
+            format!(
+                "{what} is a handle of another type (not {})",
+                T::NAME.replacen("the ", "a ", 1)
+            ),
         )),
         None => Err(Failure::new(
             MbStatus::InvalidHandle,
             format!(
-                "the handle passed as {} was never made by this library or has been freed",
-                T::NAME
+                "{what} is not a live {}: never made by this library, or freed",
+                T::NAME.trim_start_matches("the ")
             ),
         )),
     }
 }
 
 /// Checks that `ptr` is a live handle of type `T`.
-fn check_live<T: Handle>(ptr: *const T) -> Res<()> {
+fn check_live<T: Handle>(ptr: *const T, what: &str) -> Res<()> {
     if ptr.is_null() {
-        return Err(null(T::NAME));
+        return Err(null(what));
     }
     let found = live().get(&key(ptr)).copied();
-    verdict::<T>(found)
+    verdict::<T>(found, what)
 }
 
-/// The value behind the handle `ptr`.
+/// The value behind the handle `ptr`, the argument `what`.
 ///
 /// # Safety
 /// No other thread frees `ptr` or borrows it mutably while the reference
 /// lives (the C caller's contract: a handle is not freed while in use).
-pub(crate) unsafe fn handle_ref<'a, T: Handle>(ptr: *const T) -> Res<&'a T> {
-    check_live(ptr)?;
+pub(crate) unsafe fn handle_ref<'a, T: Handle>(ptr: *const T, what: &str) -> Res<&'a T> {
+    check_live(ptr, what)?;
     // SAFETY: a registered address of kind `T` came from `Box::into_raw` of a
     // `T` (`write_handle`) and is unregistered before that box is dropped
     // (`free_handle`), so it points to a live, aligned `T`; the caller
@@ -122,8 +128,8 @@ pub(crate) unsafe fn handle_ref<'a, T: Handle>(ptr: *const T) -> Res<&'a T> {
 ///
 /// # Safety
 /// No other thread uses `ptr` while the reference lives.
-pub(crate) unsafe fn handle_mut<'a, T: Handle>(ptr: *mut T) -> Res<&'a mut T> {
-    check_live(ptr)?;
+pub(crate) unsafe fn handle_mut<'a, T: Handle>(ptr: *mut T, what: &str) -> Res<&'a mut T> {
+    check_live(ptr, what)?;
     // SAFETY: as in `handle_ref`, `ptr` points to a live `T`; the caller
     // guarantees no other reference to it exists while `'a` lasts.
     Ok(unsafe { &mut *ptr })
@@ -133,7 +139,7 @@ pub(crate) unsafe fn handle_mut<'a, T: Handle>(ptr: *mut T) -> Res<&'a mut T> {
 ///
 /// # Safety
 /// No other thread uses `ptr` during or after the call.
-pub(crate) unsafe fn free_handle<T: Handle>(ptr: *mut T) -> Res<()> {
+pub(crate) unsafe fn free_handle<T: Handle>(ptr: *mut T, what: &str) -> Res<()> {
     if ptr.is_null() {
         return Ok(());
     }
@@ -141,7 +147,7 @@ pub(crate) unsafe fn free_handle<T: Handle>(ptr: *mut T) -> Res<()> {
         // Checked and removed under one write lock: no other call can free
         // or re-register this address in between.
         let mut live = live_mut();
-        verdict::<T>(live.get(&key(ptr)).copied())?;
+        verdict::<T>(live.get(&key(ptr)).copied(), what)?;
         live.remove(&key(ptr));
     }
     // SAFETY: the address was registered as a `T`, so it came from
@@ -179,13 +185,29 @@ pub(crate) unsafe fn write_out<T>(out: *mut T, value: T, what: &str) -> Res<()> 
     Ok(())
 }
 
+/// Writes `values` to the array `out` (nothing for no value).
+///
+/// # Safety
+/// `out` is `NULL` or valid for writing `values.len()` consecutive `T`s.
+pub(crate) unsafe fn write_slice<T: Copy>(out: *mut T, values: &[T], what: &str) -> Res<()> {
+    if values.is_empty() {
+        return Ok(());
+    }
+    check_out(out, what)?;
+    // SAFETY: `out` is not null and aligned (checked) and valid for
+    // `values.len()` writes by the caller's contract; a fresh `Vec`'s
+    // buffer (`values`) cannot overlap C's array.
+    unsafe { std::ptr::copy_nonoverlapping(values.as_ptr(), out, values.len()) };
+    Ok(())
+}
+
 /// Makes `value` a handle and writes it to `out`. Nothing is allocated when
 /// `out` is unusable.
 ///
 /// # Safety
 /// As [`write_out`].
 pub(crate) unsafe fn write_handle<T: Handle>(out: *mut *mut T, value: T) -> Res<()> {
-    check_out(out, "the out pointer")?;
+    check_out(out, "out")?;
     let ptr = Box::into_raw(Box::new(value));
     live_mut().insert(key(ptr), T::KIND);
     // SAFETY: as in `write_out`: `out` is checked not null and aligned, and

@@ -1,13 +1,15 @@
 //! The pair query: parameters, report, `mb_time_of_impact`.
 
 use motion_bound::ca::{
-    time_of_impact, AnyPair, BoundChoice, CaOutcome, CaParams, CaReport, ContactCriterion,
-    WitnessSearch, Work,
+    time_of_impact, AnyPair, BoundChoice, CaError, CaOutcome, CaParams, CaReport, ContactCriterion,
+    MeshWorkspace, OwnedShape, WitnessSearch, Work,
 };
+use motion_bound::RigidMotion;
+use rayon::prelude::*;
 
 use crate::error::{guard, Failure, MbStatus, Res};
 use crate::motion::{MbMotion, MbVec3};
-use crate::ptr::{handle_ref, read_in, write_out, Plain};
+use crate::ptr::{handle_ref, read_in, slice_from, write_out, write_slice, Plain};
 use crate::shape::MbShape;
 
 /// Which directed bound a query uses (`mb_params.bound`).
@@ -230,6 +232,26 @@ pub extern "C" fn mb_params_default() -> MbParams {
     }
 }
 
+/// A pair query's refusal, naming the arguments it is about; `at` goes
+/// before each name (`""`, or `"queries[3]."` in a batch).
+pub(crate) fn pair_failure(e: CaError, at: &str) -> Failure {
+    let (status, args) = match e {
+        CaError::InvalidParameter(_) => (MbStatus::InvalidParameter, "params".to_owned()),
+        CaError::Unsupported => (MbStatus::QueryError, format!("{at}shape_a, {at}shape_b")),
+        CaError::Input(_) => (
+            MbStatus::InvalidInput,
+            format!("{at}shape_a, {at}motion_a, {at}shape_b, {at}motion_b"),
+        ),
+        _ => (MbStatus::QueryError, format!("{at}motion_a, {at}motion_b")),
+    };
+    let hint = if matches!(e, CaError::Unsupported) {
+        " (two half-spaces)"
+    } else {
+        ""
+    };
+    Failure::new(status, format!("{args}: {e}{hint}"))
+}
+
 fn bad(what: &str) -> Failure {
     Failure::new(MbStatus::InvalidParameter, what)
 }
@@ -251,18 +273,44 @@ pub(crate) fn params(p: Option<MbParams>) -> Res<CaParams<f64>> {
         .with_witness(match p.witness {
             0 => WitnessSearch::Closest,
             1 => WitnessSearch::First,
-            _ => return Err(bad("witness: 0 (closest) or 1 (first)")),
+            w => {
+                return Err(bad(&format!(
+                    "params.witness is {w}: 0 (closest) or 1 (first)"
+                )))
+            }
         })
         .with_bound(match p.bound {
             0 => BoundChoice::Auto,
             1 => BoundChoice::Nevq,
             2 => BoundChoice::Evq,
-            _ => return Err(bad("bound: 0 (auto), 1 (NEVQ) or 2 (EVQ)")),
+            b => {
+                return Err(bad(&format!(
+                    "params.bound is {b}: 0 (auto), 1 (NEVQ) or 2 (EVQ)"
+                )))
+            }
         });
     c.horizon_factor = p.horizon_factor;
     c.one_sided = p.one_sided != 0;
-    c.validate()?;
+    c.validate()
+        .map_err(|e| Failure::new(MbStatus::InvalidParameter, format!("params: {e}")))?;
     Ok(c)
+}
+
+/// One pair query, its mesh workspace taken from and left in `ws`.
+pub(crate) fn one(
+    a: &OwnedShape<f64>,
+    ma: &RigidMotion<f64>,
+    b: &OwnedShape<f64>,
+    mb: &RigidMotion<f64>,
+    p: &CaParams<f64>,
+    ws: &mut Option<MeshWorkspace<f64>>,
+) -> Result<MbReport, CaError> {
+    let (pa, pb) = (a.prepare()?, b.prepare()?);
+    let pair = AnyPair::try_new(pa.shape(), pb.shape())?;
+    let mut pair = pair.with_workspace(ws.take().unwrap_or_default());
+    let report = time_of_impact(&mut pair, ma, mb, p);
+    *ws = Some(pair.into_workspace());
+    Ok(MbReport::of(&report?))
 }
 
 /// The first time bodies of shapes `shape_a` and `shape_b`, moving by
@@ -298,18 +346,99 @@ pub unsafe extern "C" fn mb_time_of_impact(
         // NULL or readable (this function's contract).
         let (sa, ma, sb, mb, p) = unsafe {
             (
-                handle_ref(shape_a)?,
-                handle_ref(motion_a)?,
-                handle_ref(shape_b)?,
-                handle_ref(motion_b)?,
+                handle_ref(shape_a, "shape_a")?,
+                handle_ref(motion_a, "motion_a")?,
+                handle_ref(shape_b, "shape_b")?,
+                handle_ref(motion_b, "motion_b")?,
                 read_in(params, "params")?,
             )
         };
         let p = self::params(p)?;
-        let (pa, pb) = (sa.data.prepare()?, sb.data.prepare()?);
-        let mut pair = AnyPair::try_new(pa.shape(), pb.shape())?;
-        let report = time_of_impact(&mut pair, &ma.motion, &mb.motion, &p)?;
+        let report = one(&sa.data, &ma.motion, &sb.data, &mb.motion, &p, &mut None)
+            .map_err(|e| pair_failure(e, ""))?;
         // SAFETY: `out` is NULL or writable (this function's contract).
-        unsafe { write_out(out, MbReport::of(&report), "out") }
+        unsafe { write_out(out, report, "out") }
+    })
+}
+
+/// One query of a batch (`mb_time_of_impact_batch`): two shapes and their
+/// motions, as `mb_time_of_impact` takes them.
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct MbPairQuery {
+    /// The first body's shape.
+    pub shape_a: *const MbShape,
+    /// The first body's motion.
+    pub motion_a: *const MbMotion,
+    /// The second body's shape.
+    pub shape_b: *const MbShape,
+    /// The second body's motion (over the same interval).
+    pub motion_b: *const MbMotion,
+}
+
+// SAFETY: a `repr(C)` struct of raw pointers: every bit pattern is a value
+// (each pointer is checked before use).
+unsafe impl Plain for MbPairQuery {}
+
+/// Many pair queries on every core: `queries[k]` answered in `out[k]` for
+/// `k < count`, each exactly as `mb_time_of_impact` answers it (the same
+/// report, bit for bit), with one `params` for all (`NULL` for the
+/// defaults). The queries run on a pool of one thread per core (rayon's
+/// global pool: `RAYON_NUM_THREADS` sets its size); the call returns when
+/// all are done. `count == 0` does nothing.
+///
+/// Errors as `mb_time_of_impact`, the message naming the query
+/// (`queries[3].shape_a is NULL`); on any error nothing is written to `out`
+/// (the first failing query, by index, is the one reported).
+///
+/// **Thread safety**: any thread; the handles may be shared between
+/// queries and with other threads' queries.
+///
+/// # Safety
+/// `queries` is `NULL` or valid for reading `count` queries, whose handles
+/// are not freed during the call; `params` is `NULL` or valid for reading
+/// an `mb_params`; `out` is `NULL` or valid for writing `count` reports.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn mb_time_of_impact_batch(
+    queries: *const MbPairQuery,
+    count: usize,
+    params: *const MbParams,
+    out: *mut MbReport,
+) -> MbStatus {
+    guard(|| {
+        // SAFETY: `queries` is NULL or holds `count` queries, `params` is
+        // NULL or readable (this function's contract).
+        let (qs, p) = unsafe {
+            (
+                slice_from(queries, count, "queries")?,
+                read_in(params, "params")?,
+            )
+        };
+        let p = self::params(p)?;
+        let mut bodies = Vec::with_capacity(count);
+        for (k, q) in qs.iter().enumerate() {
+            let name = |arg: &str| format!("queries[{k}].{arg}");
+            // SAFETY: the handles are not freed during the call (this
+            // function's contract).
+            bodies.push(unsafe {
+                (
+                    &*handle_ref(q.shape_a, &name("shape_a"))?.data,
+                    &handle_ref(q.motion_a, &name("motion_a"))?.motion,
+                    &*handle_ref(q.shape_b, &name("shape_b"))?.data,
+                    &handle_ref(q.motion_b, &name("motion_b"))?.motion,
+                )
+            });
+        }
+        let answers: Vec<Result<MbReport, CaError>> = bodies
+            .par_iter()
+            .map_init(|| None, |ws, (a, ma, b, mb)| one(a, ma, b, mb, &p, ws))
+            .collect();
+        let mut reports = Vec::with_capacity(count);
+        for (k, answer) in answers.into_iter().enumerate() {
+            reports.push(answer.map_err(|e| pair_failure(e, &format!("queries[{k}].")))?);
+        }
+        // SAFETY: `out` is NULL or writable for `count` reports (this
+        // function's contract).
+        unsafe { write_slice(out, &reports, "out") }
     })
 }

@@ -12,7 +12,9 @@ use crate::ptr::{
     free_handle, handle_mut, handle_ref, read_in, write_handle, write_out, Handle, Kind,
 };
 use crate::query::{params, MbParams, MbReport};
-use crate::shape::{Data, MbShape};
+use motion_bound::ca::OwnedShape;
+
+use crate::shape::MbShape;
 
 /// Many bodies moving over `[0, duration]`. Opaque; made by
 /// `mb_scene_new`, grown by `mb_scene_add`, queried by
@@ -21,7 +23,7 @@ use crate::shape::{Data, MbShape};
 #[derive(Debug)]
 pub struct MbScene {
     duration: f64,
-    bodies: Vec<(Arc<Data>, RigidMotion<f64>)>,
+    bodies: Vec<(Arc<OwnedShape<f64>>, RigidMotion<f64>)>,
 }
 
 impl Handle for MbScene {
@@ -65,13 +67,9 @@ impl Handle for MbSceneResult {
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn mb_scene_new(duration: f64, out: *mut *mut MbScene) -> MbStatus {
     guard(|| {
-        if !(duration.is_finite() && duration > 0.0) {
-            return Err(Failure::new(
-                MbStatus::InvalidInput,
-                "a scene's duration must be positive and finite",
-            ));
-        }
-        TimeInterval::try_new(0.0, duration)?;
+        motion_bound::ca::ArgError::positive(duration, "duration")?;
+        TimeInterval::try_new(0.0, duration)
+            .map_err(motion_bound::ca::ArgError::input("duration"))?;
         // SAFETY: `out` is NULL or writable (this function's contract).
         unsafe {
             write_handle(
@@ -106,13 +104,19 @@ pub unsafe extern "C" fn mb_scene_add(
     guard(|| {
         // SAFETY: the handles are not freed during the call and `scene` is
         // used by no other thread (this function's contract).
-        let (sc, sh, m) = unsafe { (handle_mut(scene)?, handle_ref(shape)?, handle_ref(motion)?) };
+        let (sc, sh, m) = unsafe {
+            (
+                handle_mut(scene, "scene")?,
+                handle_ref(shape, "shape")?,
+                handle_ref(motion, "motion")?,
+            )
+        };
         let i = m.motion.interval();
         if i.start() != 0.0 || i.end() != sc.duration {
             return Err(Failure::new(
                 MbStatus::QueryError,
                 format!(
-                    "the motion is over [{}, {}], the scene over [0, {}]",
+                    "motion is over [{}, {}], the scene over [0, {}]",
                     i.start(),
                     i.end(),
                     sc.duration
@@ -139,7 +143,7 @@ pub unsafe extern "C" fn mb_scene_add(
 pub unsafe extern "C" fn mb_scene_len(scene: *const MbScene, out: *mut usize) -> MbStatus {
     guard(|| {
         // SAFETY: `scene` is not freed or changed during the call (this function's contract).
-        let sc = unsafe { handle_ref(scene) }?;
+        let sc = unsafe { handle_ref(scene, "scene") }?;
         // SAFETY: `out` is NULL or writable (this function's contract).
         unsafe { write_out(out, sc.bodies.len(), "out") }
     })
@@ -150,13 +154,16 @@ fn run(sc: &MbScene, p: &SceneParams<f64>) -> Res<Vec<MbScenePair>> {
         .bodies
         .iter()
         .map(|(d, _)| d.prepare())
-        .collect::<Res<Vec<_>>>()?;
+        .collect::<Result<Vec<_>, _>>()?;
     let mut scene = Scene::try_new(TimeInterval::try_new(0.0, sc.duration)?)?;
     for (prep, (_, motion)) in prepared.iter().zip(&sc.bodies) {
         scene.try_add(prep.shape(), *motion)?;
     }
     let mut ws = SceneWorkspace::new();
-    let report = scene.query(&mut ws, p)?;
+    let report = scene.query(&mut ws, p).map_err(|e| {
+        let f = Failure::from(e);
+        Failure::new(f.status, format!("scene: {}", f.message))
+    })?;
     Ok(report
         .pairs()
         .iter()
@@ -188,7 +195,7 @@ pub unsafe extern "C" fn mb_scene_query(
     guard(|| {
         // SAFETY: `scene` is not freed or changed during the call, `params`
         // is NULL or readable (this function's contract).
-        let (sc, p) = unsafe { (handle_ref(scene)?, read_in(params, "params")?) };
+        let (sc, p) = unsafe { (handle_ref(scene, "scene")?, read_in(params, "params")?) };
         let p = SceneParams::default().with_ca(self::params(p)?);
         let pairs = run(sc, &p)?;
         // SAFETY: `out` is NULL or writable (this function's contract).
@@ -210,7 +217,7 @@ pub unsafe extern "C" fn mb_scene_result_len(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: `result` is not freed during the call (this function's contract).
-        let r = unsafe { handle_ref(result) }?;
+        let r = unsafe { handle_ref(result, "result") }?;
         // SAFETY: `out` is NULL or writable (this function's contract).
         unsafe { write_out(out, r.pairs.len(), "out") }
     })
@@ -232,11 +239,14 @@ pub unsafe extern "C" fn mb_scene_result_get(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: `result` is not freed during the call (this function's contract).
-        let r = unsafe { handle_ref(result) }?;
+        let r = unsafe { handle_ref(result, "result") }?;
         let pair = r.pairs.get(index).ok_or_else(|| {
             Failure::new(
                 MbStatus::OutOfRange,
-                format!("pair {index} of a result of {}", r.pairs.len()),
+                format!(
+                    "index {index} is past the end of a result of {} pairs",
+                    r.pairs.len()
+                ),
             )
         })?;
         // SAFETY: `out` is NULL or writable (this function's contract).
@@ -254,7 +264,7 @@ pub unsafe extern "C" fn mb_scene_result_get(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn mb_scene_result_free(result: *mut MbSceneResult) -> MbStatus {
     // SAFETY: no other thread uses `result` (this function's contract).
-    guard(|| unsafe { free_handle(result) })
+    guard(|| unsafe { free_handle(result, "result") })
 }
 
 /// Frees a scene (nothing for `NULL`); its results stay valid.
@@ -267,5 +277,5 @@ pub unsafe extern "C" fn mb_scene_result_free(result: *mut MbSceneResult) -> MbS
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn mb_scene_free(scene: *mut MbScene) -> MbStatus {
     // SAFETY: no other thread uses `scene` (this function's contract).
-    guard(|| unsafe { free_handle(scene) })
+    guard(|| unsafe { free_handle(scene, "scene") })
 }

@@ -3,129 +3,12 @@
 
 use std::sync::Arc;
 
-use motion_bound::ca::{Compound, Part, Shape};
-use motion_bound::{BallTree, Convex, ConvexKind, HalfSpace, Isometry, TriMesh, VertexSet};
+use motion_bound::ca::{ArgError, OwnedShape, Primitive};
+use motion_bound::ConvexKind;
 
 use crate::error::{guard, Failure, MbStatus, Res};
 use crate::motion::{MbPose, MbVec3};
 use crate::ptr::{free_handle, handle_ref, slice_from, write_handle, write_out, Handle, Kind};
-
-/// A convex hull's points and rounding.
-#[derive(Clone, Debug)]
-pub(crate) struct Hull {
-    points: Vec<[f64; 3]>,
-    rounding: f64,
-}
-
-impl Hull {
-    fn new(points: Vec<[f64; 3]>, rounding: f64) -> Res<Self> {
-        let hull = Self { points, rounding };
-        hull.convex(None)?; // validated once here
-        Ok(hull)
-    }
-
-    fn convex(&self, at: Option<Isometry<f64>>) -> Res<Convex<'_, f64>> {
-        let mut c = Convex::polytope(VertexSet::try_new(&self.points)?);
-        if self.rounding != 0.0 {
-            c = c.try_rounded(self.rounding)?;
-        }
-        Ok(match at {
-            Some(pose) => c.try_placed(pose)?,
-            None => c,
-        })
-    }
-}
-
-/// A triangle mesh and its tree.
-#[derive(Debug)]
-pub(crate) struct MeshData {
-    pub(crate) mesh: TriMesh<f64>,
-    tree: BallTree<f64>,
-}
-
-impl MeshData {
-    fn new(vertices: Vec<[f64; 3]>, triangles: Vec<[u32; 3]>, solid: Option<bool>) -> Res<Self> {
-        let mesh = TriMesh::try_new(vertices, triangles)?;
-        let solid = solid.unwrap_or_else(|| mesh.is_closed() && mesh.signed_volume() > 0.0);
-        let mesh = if solid { mesh.try_solid()? } else { mesh };
-        let tree = BallTree::try_from_mesh(&mesh)?;
-        Ok(Self { mesh, tree })
-    }
-
-    fn transformed(&self, at: &Isometry<f64>) -> Res<Self> {
-        let v = self
-            .mesh
-            .vertices()
-            .iter()
-            .map(|p| {
-                at.transform_point(motion_bound::Point3::from_array(*p))
-                    .to_array()
-            })
-            .collect();
-        Self::new(
-            v,
-            self.mesh.triangles().to_vec(),
-            Some(self.mesh.is_solid()),
-        )
-    }
-}
-
-/// One part of a compound, owned, in the compound's frame.
-#[derive(Debug)]
-pub(crate) enum OwnedPart {
-    Convex(Convex<'static, f64>),
-    Hull(Hull, Isometry<f64>),
-    Mesh(MeshData),
-}
-
-/// What a shape holds.
-#[derive(Debug)]
-pub(crate) enum Data {
-    Convex(Convex<'static, f64>),
-    Hull(Hull),
-    Mesh(MeshData),
-    HalfSpace(HalfSpace<f64>),
-    Compound(Vec<OwnedPart>),
-}
-
-/// A shape borrowed for one query (a compound is assembled for it).
-pub(crate) enum Prepared<'a> {
-    Shape(Shape<'a, f64>),
-    Compound(Compound<'a, f64>),
-}
-
-impl Prepared<'_> {
-    pub(crate) fn shape(&self) -> Shape<'_, f64> {
-        match self {
-            Self::Shape(s) => *s,
-            Self::Compound(c) => Shape::Compound(c),
-        }
-    }
-}
-
-impl Data {
-    pub(crate) fn prepare(&self) -> Res<Prepared<'_>> {
-        Ok(match self {
-            Self::Convex(c) => Prepared::Shape(Shape::Convex(*c)),
-            Self::Hull(h) => Prepared::Shape(Shape::Convex(h.convex(None)?)),
-            Self::Mesh(m) => Prepared::Shape(Shape::Mesh(&m.tree)),
-            Self::HalfSpace(h) => Prepared::Shape(Shape::HalfSpace(*h)),
-            Self::Compound(parts) => {
-                let parts = parts
-                    .iter()
-                    .map(|p| {
-                        Ok(match p {
-                            OwnedPart::Convex(c) => Part::Convex(*c),
-                            OwnedPart::Hull(h, at) => Part::Convex(h.convex(Some(*at))?),
-                            OwnedPart::Mesh(m) => Part::Mesh(&m.tree),
-                        })
-                    })
-                    .collect::<Res<Vec<_>>>()?;
-                Prepared::Compound(Compound::try_new(parts)?)
-            }
-        })
-    }
-}
 
 /// A body's shape in its own frame: a ball, capsule, cuboid, cylinder, cone
 /// (rounded or not), convex hull, triangle mesh (with its tree, built once),
@@ -134,7 +17,7 @@ impl Data {
 /// it needs, so a shape may be freed once it has been passed to them.
 #[derive(Debug)]
 pub struct MbShape {
-    pub(crate) data: Arc<Data>,
+    pub(crate) data: Arc<OwnedShape<f64>>,
 }
 
 impl Handle for MbShape {
@@ -181,20 +64,17 @@ pub enum MbMeshSolidity {
     Hollow = 2,
 }
 
-fn new_shape(out: *mut *mut MbShape, data: Data) -> Res<()> {
+fn new_shape(out: *mut *mut MbShape, data: Result<OwnedShape<f64>, ArgError>) -> Res<()> {
     let shape = MbShape {
-        data: Arc::new(data),
+        data: Arc::new(data?),
     };
     // SAFETY: every caller passes on its own caller's `out`, which is NULL
     // or writable by each public function's contract.
     unsafe { write_handle(out, shape) }
 }
 
-fn convex(
-    out: *mut *mut MbShape,
-    c: Result<Convex<'static, f64>, motion_bound::InputError>,
-) -> Res<()> {
-    new_shape(out, Data::Convex(c?))
+fn primitive(out: *mut *mut MbShape, p: Primitive<f64>) -> Res<()> {
+    new_shape(out, OwnedShape::try_primitive(p, 0.0))
 }
 
 /// A ball of `radius` about the body origin. `MB_STATUS_INVALID_INPUT` for
@@ -206,7 +86,7 @@ fn convex(
 /// `out` is `NULL` or valid for writing a pointer.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn mb_shape_ball(radius: f64, out: *mut *mut MbShape) -> MbStatus {
-    guard(|| convex(out, Convex::try_ball(radius)))
+    guard(|| primitive(out, Primitive::Ball(radius)))
 }
 
 /// A capsule: the segment from `(0, -half_height, 0)` to
@@ -222,7 +102,7 @@ pub unsafe extern "C" fn mb_shape_capsule(
     radius: f64,
     out: *mut *mut MbShape,
 ) -> MbStatus {
-    guard(|| convex(out, Convex::try_capsule(half_height, radius)))
+    guard(|| primitive(out, Primitive::Capsule(half_height, radius)))
 }
 
 /// The box `[-hx, hx] x [-hy, hy] x [-hz, hz]` of the half extents.
@@ -233,7 +113,7 @@ pub unsafe extern "C" fn mb_shape_capsule(
 /// `out` is `NULL` or valid for writing a pointer.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn mb_shape_cuboid(half_extents: MbVec3, out: *mut *mut MbShape) -> MbStatus {
-    guard(|| convex(out, Convex::try_cuboid(half_extents.array())))
+    guard(|| primitive(out, Primitive::Cuboid(half_extents.array())))
 }
 
 /// The cylinder along the body's `y` axis, `|y| <= half_height`, of radius
@@ -249,7 +129,7 @@ pub unsafe extern "C" fn mb_shape_cylinder(
     radius: f64,
     out: *mut *mut MbShape,
 ) -> MbStatus {
-    guard(|| convex(out, Convex::try_cylinder(half_height, radius)))
+    guard(|| primitive(out, Primitive::Cylinder(half_height, radius)))
 }
 
 /// The cone along the body's `y` axis: apex `(0, half_height, 0)`, base of
@@ -265,7 +145,7 @@ pub unsafe extern "C" fn mb_shape_cone(
     radius: f64,
     out: *mut *mut MbShape,
 ) -> MbStatus {
-    guard(|| convex(out, Convex::try_cone(half_height, radius)))
+    guard(|| primitive(out, Primitive::Cone(half_height, radius)))
 }
 
 /// The convex hull of `point_count` points, `points` holding
@@ -287,8 +167,8 @@ pub unsafe extern "C" fn mb_shape_convex_hull(
     guard(|| {
         // SAFETY: `points` is NULL or holds `3 * point_count` doubles (this
         // function's contract).
-        let p = unsafe { triples(points, point_count, "points") }?;
-        new_shape(out, Data::Hull(Hull::new(p, 0.0)?))
+        let p = unsafe { triples(points, point_count, "points", "point_count") }?;
+        new_shape(out, OwnedShape::try_hull(p, 0.0))
     })
 }
 
@@ -296,13 +176,24 @@ pub unsafe extern "C" fn mb_shape_convex_hull(
 ///
 /// # Safety
 /// `ptr` is `NULL` or valid for reading `3 * count` doubles.
-unsafe fn triples(ptr: *const f64, count: usize, what: &str) -> Res<Vec<[f64; 3]>> {
+unsafe fn triples(
+    ptr: *const f64,
+    count: usize,
+    what: &str,
+    count_name: &str,
+) -> Res<Vec<[f64; 3]>> {
     if count == 0 {
-        return Err(Failure::new(MbStatus::InvalidSize, format!("no {what}")));
+        return Err(Failure::new(
+            MbStatus::InvalidSize,
+            format!("{count_name} is 0 (no {what})"),
+        ));
     }
-    let len = count
-        .checked_mul(3)
-        .ok_or_else(|| Failure::new(MbStatus::InvalidSize, format!("too many {what}")))?;
+    let len = count.checked_mul(3).ok_or_else(|| {
+        Failure::new(
+            MbStatus::InvalidSize,
+            format!("{count_name} is {count}: too many {what}"),
+        )
+    })?;
     // SAFETY: the caller's contract: `3 * count` readable doubles.
     let flat = unsafe { slice_from(ptr, len, what) }?;
     Ok(flat.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect())
@@ -326,24 +217,8 @@ pub unsafe extern "C" fn mb_shape_rounded(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: `shape` is not freed during the call (this function's contract).
-        let s = unsafe { handle_ref(shape) }?;
-        let data = match &*s.data {
-            Data::Convex(c) => Data::Convex(c.try_rounded(radius)?),
-            Data::Hull(h) => {
-                let total = h.rounding + radius;
-                if radius.is_nan() || radius < 0.0 {
-                    return Err(motion_bound::InputError::NegativeRadius.into());
-                }
-                Data::Hull(Hull::new(h.points.clone(), total)?)
-            }
-            _ => {
-                return Err(Failure::new(
-                    MbStatus::InvalidInput,
-                    "only convex shapes (primitives and hulls) can be rounded",
-                ))
-            }
-        };
-        new_shape(out, data)
+        let s = unsafe { handle_ref(shape, "shape") }?;
+        new_shape(out, s.data.try_rounded(radius))
     })
 }
 
@@ -381,24 +256,33 @@ pub unsafe extern "C" fn mb_shape_mesh(
             other => {
                 return Err(Failure::new(
                     MbStatus::InvalidInput,
-                    format!("unknown mesh solidity {other} (0 auto, 1 solid, 2 hollow)"),
+                    format!("solidity is {other}: 0 (auto), 1 (solid) or 2 (hollow)"),
                 ))
             }
         };
         // SAFETY: `vertices` is NULL or holds `3 * vertex_count` doubles (this
         // function's contract).
-        let v = unsafe { triples(vertices, vertex_count, "vertices") }?;
+        let v = unsafe { triples(vertices, vertex_count, "vertices", "vertex_count") }?;
         if triangle_count == 0 {
-            return Err(Failure::new(MbStatus::InvalidSize, "no triangles"));
+            return Err(Failure::new(
+                MbStatus::InvalidSize,
+                "triangle_count is 0 (no triangles)",
+            ));
         }
-        let len = triangle_count
-            .checked_mul(3)
-            .ok_or_else(|| Failure::new(MbStatus::InvalidSize, "too many triangles"))?;
+        let len = triangle_count.checked_mul(3).ok_or_else(|| {
+            Failure::new(
+                MbStatus::InvalidSize,
+                format!("triangle_count is {triangle_count}: too many triangles"),
+            )
+        })?;
         // SAFETY: `indices` is NULL or holds `3 * triangle_count` indices
         // (this function's contract).
         let flat = unsafe { slice_from(indices, len, "indices") }?;
         let t = flat.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect();
-        new_shape(out, Data::Mesh(MeshData::new(v, t, solid)?))
+        new_shape(
+            out,
+            OwnedShape::try_mesh(v, t, solid, ["vertices", "indices", "solidity"]),
+        )
     })
 }
 
@@ -413,7 +297,7 @@ pub unsafe extern "C" fn mb_shape_mesh(
 /// `out` is `NULL` or valid for writing a pointer.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn mb_shape_half_space(normal: MbVec3, out: *mut *mut MbShape) -> MbStatus {
-    guard(|| new_shape(out, Data::HalfSpace(HalfSpace::try_new(normal.vec())?)))
+    guard(|| new_shape(out, OwnedShape::try_half_space(normal.array())))
 }
 
 /// Several shapes moving as one body: `parts[k]` placed at `poses[k]` in the
@@ -421,7 +305,10 @@ pub unsafe extern "C" fn mb_shape_half_space(normal: MbVec3, out: *mut *mut MbSh
 /// (not half-spaces or compounds); they are copied (a mesh's tree is
 /// rebuilt at its pose), so the parts may be freed afterwards.
 /// `MB_STATUS_INVALID_SIZE` for `count == 0`, `MB_STATUS_INVALID_INPUT` for a
-/// half-space or compound part or a bad pose.
+/// half-space or compound part or a bad pose. `parts` is an array of the
+/// handles as made (`mb_shape *parts[]`: C does not convert `mb_shape **`
+/// to `const mb_shape *const *` without a warning; the parts are only
+/// read).
 ///
 /// **Thread safety**: any thread; the parts may be shared.
 ///
@@ -431,7 +318,7 @@ pub unsafe extern "C" fn mb_shape_half_space(normal: MbVec3, out: *mut *mut MbSh
 /// writing a pointer.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn mb_shape_compound(
-    parts: *const *const MbShape,
+    parts: *const *mut MbShape,
     poses: *const MbPose,
     count: usize,
     out: *mut *mut MbShape,
@@ -440,7 +327,7 @@ pub unsafe extern "C" fn mb_shape_compound(
         if count == 0 {
             return Err(Failure::new(
                 MbStatus::InvalidSize,
-                "a compound needs a part",
+                "count is 0: a compound needs a part",
             ));
         }
         // SAFETY: `parts` and `poses` are NULL or hold `count` items (this
@@ -451,24 +338,13 @@ pub unsafe extern "C" fn mb_shape_compound(
                 slice_from(poses, count, "poses")?,
             )
         };
-        let mut owned = Vec::with_capacity(count);
-        for (&p, pose) in ps.iter().zip(at) {
+        let mut given = Vec::with_capacity(count);
+        for (k, (&p, pose)) in ps.iter().zip(at).enumerate() {
             // SAFETY: the parts are not freed during the call (this function's contract).
-            let part = unsafe { handle_ref(p) }?;
-            let iso = pose.isometry()?;
-            owned.push(match &*part.data {
-                Data::Convex(c) => OwnedPart::Convex(c.try_placed(iso)?),
-                Data::Hull(h) => OwnedPart::Hull(h.clone(), iso),
-                Data::Mesh(m) => OwnedPart::Mesh(m.transformed(&iso)?),
-                Data::HalfSpace(_) | Data::Compound(_) => return Err(Failure::new(
-                    MbStatus::InvalidInput,
-                    "a compound's parts are meshes and convex shapes (no half-space, no compound)",
-                )),
-            });
+            let part = unsafe { handle_ref(p.cast_const(), &format!("parts[{k}]")) }?;
+            given.push((&*part.data, pose.isometry(&format!("poses[{k}]"))?));
         }
-        let data = Data::Compound(owned);
-        data.prepare()?; // validated once here
-        new_shape(out, data)
+        new_shape(out, OwnedShape::try_compound(given))
     })
 }
 
@@ -486,9 +362,9 @@ pub unsafe extern "C" fn mb_shape_get_kind(
 ) -> MbStatus {
     guard(|| {
         // SAFETY: `shape` is not freed during the call (this function's contract).
-        let s = unsafe { handle_ref(shape) }?;
+        let s = unsafe { handle_ref(shape, "shape") }?;
         let kind = match &*s.data {
-            Data::Convex(c) => match c.kind() {
+            OwnedShape::Convex(c) => match c.kind() {
                 ConvexKind::Ball => MbShapeKind::Ball,
                 ConvexKind::Capsule => MbShapeKind::Capsule,
                 ConvexKind::Cuboid { .. } => MbShapeKind::Cuboid,
@@ -496,10 +372,10 @@ pub unsafe extern "C" fn mb_shape_get_kind(
                 ConvexKind::Cone { .. } => MbShapeKind::Cone,
                 _ => MbShapeKind::ConvexHull,
             },
-            Data::Hull(_) => MbShapeKind::ConvexHull,
-            Data::Mesh(_) => MbShapeKind::Mesh,
-            Data::HalfSpace(_) => MbShapeKind::HalfSpace,
-            Data::Compound(_) => MbShapeKind::Compound,
+            OwnedShape::Hull(_) => MbShapeKind::ConvexHull,
+            OwnedShape::Mesh(_) => MbShapeKind::Mesh,
+            OwnedShape::HalfSpace(_) => MbShapeKind::HalfSpace,
+            _ => MbShapeKind::Compound,
         };
         // SAFETY: `out` is NULL or writable (this function's contract).
         unsafe { write_out(out, kind, "out") }
@@ -518,5 +394,5 @@ pub unsafe extern "C" fn mb_shape_get_kind(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn mb_shape_free(shape: *mut MbShape) -> MbStatus {
     // SAFETY: no other thread uses `shape` (this function's contract).
-    guard(|| unsafe { free_handle(shape) })
+    guard(|| unsafe { free_handle(shape, "shape") })
 }

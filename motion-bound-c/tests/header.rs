@@ -112,7 +112,12 @@ fn header_is_what_cbindgen_generates() {
         .generate()
         .expect("cbindgen generates the header")
         .write(&mut fresh);
-    let committed = std::fs::read(dir.join("include/motion_bound.h")).expect("the header");
+    let path = dir.join("include/motion_bound.h");
+    // `MB_WRITE_HEADER=1 cargo test -p motion-bound-c --test header` writes it instead.
+    if std::env::var_os("MB_WRITE_HEADER").is_some() {
+        std::fs::write(&path, &fresh).expect("the header is writable");
+    }
+    let committed = std::fs::read(&path).expect("the header");
     if fresh != committed {
         let fresh = String::from_utf8_lossy(&fresh);
         let committed = String::from_utf8_lossy(&committed);
@@ -123,8 +128,8 @@ fn header_is_what_cbindgen_generates() {
             .unwrap_or_else(|| fresh.lines().count().min(committed.lines().count()));
         panic!(
             "include/motion_bound.h is out of date (first difference at line {}: generated {:?}, \
-             committed {:?}); regenerate it: cbindgen --config cbindgen.toml --crate motion-bound-c \
-             --output include/motion_bound.h",
+             committed {:?}); regenerate it: MB_WRITE_HEADER=1 cargo test -p motion-bound-c --test header, or \
+             cbindgen --config cbindgen.toml --crate motion-bound-c --output include/motion_bound.h",
             first + 1,
             fresh.lines().nth(first),
             committed.lines().nth(first)

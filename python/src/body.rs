@@ -3,148 +3,26 @@
 //! function per kind; each body remembers its factory and arguments, which
 //! is how it pickles.
 
-use motion_bound::ca::{Compound, Part, Shape};
-use motion_bound::{BallTree, Convex, HalfSpace, Isometry, MeshError, TriMesh, Vec3, VertexSet};
+use motion_bound::ca::{OwnedShape, PreparedShape, Primitive, Shape};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyTuple};
 
 use crate::arrays::{matrix4, rows3, to_numpy, triangles, vec3};
-use crate::errors::{input, input_in, length_arg, mesh_in, positive_arg};
+use crate::errors::{arg, input};
 use crate::motion::{pose_arg, Pose, PoseSource};
 
-/// A primitive convex shape and how it was made.
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum Primitive {
-    Ball(f64),
-    Capsule(f64, f64),
-    Cuboid([f64; 3]),
-    Cylinder(f64, f64),
-    Cone(f64, f64),
-}
-
-/// The convex shape of `p` rounded by `rounding`. Every length is checked
-/// here first, so that an error names the argument (`half_extents[1]`, say)
-/// where the core would say "radius"; what the core still refuses (a
-/// magnitude beyond its range) is reported with the argument names too.
-fn primitive_convex(p: Primitive, rounding: f64) -> PyResult<Convex<'static, f64>> {
-    let (c, names) = match p {
-        Primitive::Ball(r) => (Convex::try_ball(length_arg(r, "radius")?), "radius"),
-        Primitive::Capsule(h, r) => (
-            Convex::try_capsule(length_arg(h, "half_height")?, length_arg(r, "radius")?),
-            "half_height, radius",
-        ),
-        Primitive::Cuboid(h) => {
-            for (k, x) in h.iter().enumerate() {
-                length_arg(*x, &format!("half_extents[{k}]"))?;
-            }
-            (Convex::try_cuboid(h), "half_extents")
-        }
-        Primitive::Cylinder(h, r) => (
-            Convex::try_cylinder(positive_arg(h, "half_height")?, length_arg(r, "radius")?),
-            "half_height, radius",
-        ),
-        Primitive::Cone(h, r) => (
-            Convex::try_cone(positive_arg(h, "half_height")?, length_arg(r, "radius")?),
-            "half_height, radius",
-        ),
-    };
-    let c = c.map_err(input_in(names))?;
-    if length_arg(rounding, "rounding")? == 0.0 {
-        Ok(c)
-    } else {
-        c.try_rounded(rounding).map_err(input_in("rounding"))
-    }
-}
-
-/// A convex hull's points and rounding.
-#[derive(Clone, Debug)]
-pub(crate) struct Hull {
-    points: Vec<[f64; 3]>,
-    rounding: f64,
-}
-
-impl Hull {
-    fn new(points: Vec<[f64; 3]>, rounding: f64) -> PyResult<Self> {
-        length_arg(rounding, "rounding")?;
-        VertexSet::try_new(&points).map_err(input_in("points"))?;
-        let hull = Self { points, rounding };
-        hull.convex(None)?; // validated once here
-        Ok(hull)
-    }
-
-    fn convex(&self, at: Option<Isometry<f64>>) -> PyResult<Convex<'_, f64>> {
-        let set = VertexSet::try_new(&self.points).map_err(input)?;
-        let mut c = Convex::polytope(set);
-        if self.rounding != 0.0 {
-            c = c.try_rounded(self.rounding).map_err(input_in("rounding"))?;
-        }
-        match at {
-            Some(pose) => c.try_placed(pose).map_err(input),
-            None => Ok(c),
-        }
-    }
-}
-
-/// A triangle mesh and its ball tree.
+/// How a body was made, for pickling and `repr` (what it is, the crate's
+/// [`OwnedShape`], does not keep a primitive's dimensions or a half-space's
+/// normal as given, or a compound's bodies).
 #[derive(Debug)]
-pub(crate) struct MeshData {
-    pub(crate) mesh: TriMesh<f64>,
-    pub(crate) tree: BallTree<f64>,
-}
-
-impl MeshData {
-    /// The mesh, solid as `solid` asks: `Some(true)` solid (refused with
-    /// `MeshError` unless closed and outward-wound), `Some(false)` hollow,
-    /// `None` solid exactly when it is closed and outward-wound.
-    fn new(vertices: Vec<[f64; 3]>, faces: Vec<[u32; 3]>, solid: Option<bool>) -> PyResult<Self> {
-        let mesh = TriMesh::try_new(vertices, faces).map_err(|e| {
-            let what = match e {
-                MeshError::Vertex(_) | MeshError::NoVertices => "vertices",
-                _ => "faces",
-            };
-            mesh_in(what)(e)
-        })?;
-        let asked = solid.is_some();
-        let solid = solid.unwrap_or_else(|| mesh.is_closed() && mesh.signed_volume() > 0.0);
-        let mesh = if solid {
-            mesh.try_solid()
-                .map_err(mesh_in(if asked { "solid=True" } else { "solid" }))?
-        } else {
-            mesh
-        };
-        let tree = BallTree::try_from_mesh(&mesh).map_err(input_in("vertices, faces"))?;
-        Ok(Self { mesh, tree })
-    }
-}
-
-/// One part of a compound, owned, already in the compound's frame.
-#[derive(Debug)]
-pub(crate) enum OwnedPart {
-    Convex(Convex<'static, f64>),
-    Hull(Hull, Isometry<f64>),
-    Mesh(MeshData),
-}
-
-/// What a body holds.
-#[derive(Debug)]
-pub(crate) enum Data {
-    Convex {
-        primitive: Primitive,
-        rounding: f64,
-        convex: Convex<'static, f64>,
-    },
-    Hull(Hull),
-    Mesh(MeshData),
-    HalfSpace {
-        normal: [f64; 3],
-        half: HalfSpace<f64>,
-    },
-    Compound {
-        /// The parts as given (for pickling).
-        given: Vec<(Py<Body>, Pose)>,
-        parts: Vec<OwnedPart>,
-    },
+pub(crate) enum Source {
+    Primitive(Primitive<f64>, f64),
+    Hull,
+    Mesh,
+    HalfSpace([f64; 3]),
+    /// The parts as given.
+    Compound(Vec<(Py<Body>, Pose)>),
 }
 
 /// A body: a shape in its own frame (meshes with their ball tree, built
@@ -154,63 +32,31 @@ pub(crate) enum Data {
 #[pyclass(frozen, module = "motion_bound")]
 #[derive(Debug)]
 pub struct Body {
-    pub(crate) data: Data,
-}
-
-/// A body's shape borrowed for one query: a [`Shape`], or a compound whose
-/// parts were assembled for it (a shape borrows its compound).
-pub(crate) enum Prepared<'a> {
-    Shape(Shape<'a, f64>),
-    Compound(Compound<'a, f64>),
-}
-
-impl Prepared<'_> {
-    /// The shape, for a pair query or a scene.
-    pub(crate) fn shape(&self) -> Shape<'_, f64> {
-        match self {
-            Self::Shape(s) => *s,
-            Self::Compound(c) => Shape::Compound(c),
-        }
-    }
+    /// What it is: the crate's owned shape.
+    pub(crate) shape: OwnedShape<f64>,
+    /// How it was made.
+    pub(crate) source: Source,
 }
 
 impl Body {
     /// The shapes a query borrows.
-    pub(crate) fn prepare(&self) -> PyResult<Prepared<'_>> {
-        Ok(match &self.data {
-            Data::Convex { convex, .. } => Prepared::Shape(Shape::Convex(*convex)),
-            Data::Hull(h) => Prepared::Shape(Shape::Convex(h.convex(None)?)),
-            Data::Mesh(m) => Prepared::Shape(Shape::Mesh(&m.tree)),
-            Data::HalfSpace { half, .. } => Prepared::Shape(Shape::HalfSpace(*half)),
-            Data::Compound { parts, .. } => {
-                let parts = parts
-                    .iter()
-                    .map(|p| {
-                        Ok(match p {
-                            OwnedPart::Convex(c) => Part::Convex(*c),
-                            OwnedPart::Hull(h, at) => Part::Convex(h.convex(Some(*at))?),
-                            OwnedPart::Mesh(m) => Part::Mesh(&m.tree),
-                        })
-                    })
-                    .collect::<PyResult<Vec<_>>>()?;
-                Prepared::Compound(Compound::try_new(parts).map_err(input_in("parts"))?)
-            }
-        })
+    pub(crate) fn prepare(&self) -> PyResult<PreparedShape<'_, f64>> {
+        self.shape.prepare().map_err(input)
     }
 
     pub(crate) fn kind_name(&self) -> &'static str {
-        match &self.data {
-            Data::Convex { primitive, .. } => match primitive {
+        match &self.source {
+            Source::Primitive(primitive, _) => match primitive {
                 Primitive::Ball(_) => "ball",
                 Primitive::Capsule(..) => "capsule",
                 Primitive::Cuboid(_) => "box",
                 Primitive::Cylinder(..) => "cylinder",
-                Primitive::Cone(..) => "cone",
+                _ => "cone",
             },
-            Data::Hull(_) => "convex_hull",
-            Data::Mesh(_) => "mesh",
-            Data::HalfSpace { .. } => "half_space",
-            Data::Compound { .. } => "compound",
+            Source::Hull => "convex_hull",
+            Source::Mesh => "mesh",
+            Source::HalfSpace(_) => "half_space",
+            Source::Compound(_) => "compound",
         }
     }
 }
@@ -231,9 +77,9 @@ impl Body {
     /// A mesh's vertices as an `(n, 3)` array (`None` for other kinds).
     #[getter]
     fn vertices<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
-        match &self.data {
-            Data::Mesh(m) => Ok(Some(rows_to_numpy(py, m.mesh.vertices())?)),
-            Data::Hull(h) => Ok(Some(rows_to_numpy(py, &h.points)?)),
+        match &self.shape {
+            OwnedShape::Mesh(m) => Ok(Some(rows_to_numpy(py, m.mesh().vertices())?)),
+            OwnedShape::Hull(h) => Ok(Some(rows_to_numpy(py, h.points())?)),
             _ => Ok(None),
         }
     }
@@ -242,9 +88,9 @@ impl Body {
     /// kinds).
     #[getter]
     fn faces<'py>(&self, py: Python<'py>) -> PyResult<Option<Bound<'py, PyAny>>> {
-        match &self.data {
-            Data::Mesh(m) => {
-                let f = m.mesh.triangles();
+        match &self.shape {
+            OwnedShape::Mesh(m) => {
+                let f = m.mesh().triangles();
                 let flat: Vec<i64> = f.iter().flatten().map(|&i| i64::from(i)).collect();
                 let arr = numpy::PyArray1::from_vec(py, flat);
                 use numpy::PyArrayMethods;
@@ -258,8 +104,8 @@ impl Body {
     /// hollow (its triangles alone); `None` for other kinds.
     #[getter]
     fn solid(&self) -> Option<bool> {
-        match &self.data {
-            Data::Mesh(m) => Some(m.mesh.is_solid()),
+        match &self.shape {
+            OwnedShape::Mesh(m) => Some(m.mesh().is_solid()),
             _ => None,
         }
     }
@@ -286,27 +132,28 @@ impl Body {
         let this = slf.get();
         let f = module.getattr(this.kind_name())?;
         let float = |x: f64| -> PyResult<Bound<'py, PyAny>> { Ok(x.into_pyobject(py)?.into_any()) };
-        let args: Vec<Bound<'py, PyAny>> = match &this.data {
-            Data::Convex {
-                primitive,
-                rounding,
-                ..
-            } => match *primitive {
+        let args: Vec<Bound<'py, PyAny>> = match (&this.source, &this.shape) {
+            (Source::Primitive(primitive, rounding), _) => match *primitive {
                 Primitive::Ball(r) => vec![float(r)?],
                 Primitive::Capsule(h, r) => vec![float(h)?, float(r)?],
                 Primitive::Cuboid(h) => vec![to_numpy(py, h.to_vec(), &[3])?, float(*rounding)?],
                 Primitive::Cylinder(h, r) | Primitive::Cone(h, r) => {
                     vec![float(h)?, float(r)?, float(*rounding)?]
                 }
+                _ => {
+                    return Err(PyTypeError::new_err(
+                        "a primitive this module does not make",
+                    ))
+                }
             },
-            Data::Hull(h) => vec![rows_to_numpy(py, &h.points)?, float(h.rounding)?],
-            Data::Mesh(m) => {
+            (_, OwnedShape::Hull(h)) => vec![rows_to_numpy(py, h.points())?, float(h.rounding())?],
+            (_, OwnedShape::Mesh(m)) => {
                 let b = slf.as_any();
-                let solid = m.mesh.is_solid().into_pyobject(py)?.to_owned().into_any();
+                let solid = m.mesh().is_solid().into_pyobject(py)?.to_owned().into_any();
                 vec![b.getattr("vertices")?, b.getattr("faces")?, solid]
             }
-            Data::HalfSpace { normal, .. } => vec![to_numpy(py, normal.to_vec(), &[3])?],
-            Data::Compound { given, .. } => {
+            (Source::HalfSpace(normal), _) => vec![to_numpy(py, normal.to_vec(), &[3])?],
+            (Source::Compound(given), _) => {
                 let items = given
                     .iter()
                     .map(|(b, p)| {
@@ -316,17 +163,14 @@ impl Body {
                     .collect::<PyResult<Vec<_>>>()?;
                 vec![PyList::new(py, items)?.into_any()]
             }
+            _ => return Err(PyTypeError::new_err("a body this module does not make")),
         };
         PyTuple::new(py, [f, PyTuple::new(py, args)?.into_any()])
     }
 
     fn __repr__(&self) -> String {
-        match &self.data {
-            Data::Convex {
-                primitive,
-                rounding,
-                ..
-            } => {
+        match (&self.source, &self.shape) {
+            (Source::Primitive(primitive, rounding), _) => {
                 let r = if *rounding == 0.0 {
                     String::new()
                 } else {
@@ -338,28 +182,31 @@ impl Body {
                     Primitive::Cuboid(h) => format!("box({:?}{r})", h),
                     Primitive::Cylinder(h, x) => format!("cylinder({h}, {x}{r})"),
                     Primitive::Cone(h, x) => format!("cone({h}, {x}{r})"),
+                    other => format!("{other:?}"),
                 }
             }
-            Data::Hull(h) => format!("convex_hull({} points)", h.points.len()),
-            Data::Mesh(m) => format!(
+            (_, OwnedShape::Hull(h)) => format!("convex_hull({} points)", h.points().len()),
+            (_, OwnedShape::Mesh(m)) => format!(
                 "mesh({} vertices, {} triangles, {})",
-                m.mesh.vertices().len(),
-                m.mesh.triangles().len(),
-                if m.mesh.is_solid() { "solid" } else { "hollow" }
+                m.mesh().vertices().len(),
+                m.mesh().triangles().len(),
+                if m.mesh().is_solid() {
+                    "solid"
+                } else {
+                    "hollow"
+                }
             ),
-            Data::HalfSpace { normal, .. } => format!("half_space({normal:?})"),
-            Data::Compound { given, .. } => format!("compound({} parts)", given.len()),
+            (Source::HalfSpace(normal), _) => format!("half_space({normal:?})"),
+            (Source::Compound(given), _) => format!("compound({} parts)", given.len()),
+            (_, other) => format!("{other:?}"),
         }
     }
 }
 
-fn convex_body(primitive: Primitive, rounding: f64) -> PyResult<Body> {
+fn convex_body(primitive: Primitive<f64>, rounding: f64) -> PyResult<Body> {
     Ok(Body {
-        data: Data::Convex {
-            primitive,
-            rounding,
-            convex: primitive_convex(primitive, rounding)?,
-        },
+        shape: OwnedShape::try_primitive(primitive, rounding).map_err(arg)?,
+        source: Source::Primitive(primitive, rounding),
     })
 }
 
@@ -389,8 +236,14 @@ fn mesh(
 ) -> PyResult<Body> {
     let v = rows3(vertices, "vertices")?;
     let f = triangles(faces, "faces")?;
+    let asked = if solid.is_some() {
+        "solid=True"
+    } else {
+        "solid"
+    };
     Ok(Body {
-        data: Data::Mesh(MeshData::new(v, f, solid)?),
+        shape: OwnedShape::try_mesh(v, f, solid, ["vertices", "faces", asked]).map_err(arg)?,
+        source: Source::Mesh,
     })
 }
 
@@ -600,7 +453,8 @@ fn cone(half_height: f64, radius: f64, rounding: f64) -> PyResult<Body> {
 #[pyo3(signature = (points, rounding = 0.0))]
 fn convex_hull(points: &Bound<'_, PyAny>, rounding: f64) -> PyResult<Body> {
     Ok(Body {
-        data: Data::Hull(Hull::new(rows3(points, "points")?, rounding)?),
+        shape: OwnedShape::try_hull(rows3(points, "points")?, rounding).map_err(arg)?,
+        source: Source::Hull,
     })
 }
 
@@ -611,23 +465,9 @@ fn convex_hull(points: &Bound<'_, PyAny>, rounding: f64) -> PyResult<Body> {
 fn half_space(normal: &Bound<'_, PyAny>) -> PyResult<Body> {
     let n = vec3(normal, "normal")?;
     Ok(Body {
-        data: Data::HalfSpace {
-            normal: n,
-            half: HalfSpace::try_new(Vec3::from_array(n)).map_err(input_in("normal"))?,
-        },
+        shape: OwnedShape::try_half_space(n).map_err(arg)?,
+        source: Source::HalfSpace(n),
     })
-}
-
-fn transform_mesh(m: &TriMesh<f64>, at: &Isometry<f64>) -> PyResult<MeshData> {
-    let v = m
-        .vertices()
-        .iter()
-        .map(|p| {
-            at.transform_point(motion_bound::Point3::from_array(*p))
-                .to_array()
-        })
-        .collect();
-    MeshData::new(v, m.triangles().to_vec(), Some(m.is_solid()))
 }
 
 /// Several bodies moving as one: `parts` is a list of `(body, pose)` with
@@ -636,7 +476,6 @@ fn transform_mesh(m: &TriMesh<f64>, at: &Isometry<f64>) -> PyResult<MeshData> {
 #[pyfunction]
 fn compound(parts: &Bound<'_, PyAny>) -> PyResult<Body> {
     let mut given = Vec::new();
-    let mut owned = Vec::new();
     let items = parts
         .try_iter()
         .map_err(|_| PyTypeError::new_err("parts must be a list of (body, pose) pairs"))?;
@@ -649,36 +488,14 @@ fn compound(parts: &Bound<'_, PyAny>) -> PyResult<Body> {
             .cast_into()
             .map_err(|_| PyTypeError::new_err(format!("parts[{k}][0] must be a Body")))?;
         let pose = pose_arg(&pose, &format!("parts[{k}][1]"))?;
-        let at = pose.iso;
-        let what = format!("parts[{k}]");
-        let part = match &body.get().data {
-            Data::Convex { convex, .. } => {
-                OwnedPart::Convex(convex.try_placed(at).map_err(input_in(&what))?)
-            }
-            Data::Hull(h) => OwnedPart::Hull(h.clone(), at),
-            Data::Mesh(m) => OwnedPart::Mesh(transform_mesh(&m.mesh, &at)?),
-            Data::HalfSpace { .. } | Data::Compound { .. } => {
-                return Err(PyValueError::new_err(format!(
-                    "parts[{k}] is a {}: a compound's parts are meshes and convex shapes (no \
-                     half-space, no compound)",
-                    body.get().kind_name()
-                )))
-            }
-        };
-        owned.push(part);
         given.push((body.unbind(), pose));
     }
-    if owned.is_empty() {
-        return Err(input_in("parts")(motion_bound::InputError::EmptyCompound));
-    }
-    let b = Body {
-        data: Data::Compound {
-            given,
-            parts: owned,
-        },
-    };
-    b.prepare()?; // validated once here
-    Ok(b)
+    let shape = OwnedShape::try_compound(given.iter().map(|(b, p)| (&b.get().shape, p.iso)))
+        .map_err(arg)?;
+    Ok(Body {
+        shape,
+        source: Source::Compound(given),
+    })
 }
 
 pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {

@@ -24,10 +24,11 @@ use pyo3::types::{PyDict, PyList, PyTuple};
 use rayon::prelude::*;
 
 use crate::arrays::{floats, index, rows3, to_numpy, vec3};
-use crate::body::{Body, Data};
+use crate::body::{Body, Source};
 use crate::errors::{InputError, MeshError, MotionBoundError, QueryError, UrdfError};
 use crate::motion::{pose_arg, Pose};
 use crate::query::next_chunk;
+use motion_bound::ca::OwnedShape;
 
 /// A chain's refusal, as the module's typed errors; `what` is the argument
 /// it is about (`"q0"`, `"edges[3][1]"`, `"path"`).
@@ -396,14 +397,14 @@ impl ChainScene {
     /// `body` placed at `at` as the crate's obstacles named `name`.
     fn make(&self, body: &Body, at: &RPose<f64>, name: &str, out: &mut Vec<Made>) -> PyResult<()> {
         let what = |e| chain_error(e, "pose");
-        match &body.data {
-            Data::Convex { convex, .. } => out.push(Made::Shape(
+        match (&body.shape, &body.source) {
+            (OwnedShape::Convex(convex), _) => out.push(Made::Shape(
                 ShapeObstacle::try_new(name, *convex, *at).map_err(what)?,
             )),
-            Data::Mesh(m) => out.push(Made::Mesh(
-                Obstacle::try_new(name, m.mesh.clone(), *at).map_err(what)?,
+            (OwnedShape::Mesh(m), _) => out.push(Made::Mesh(
+                Obstacle::try_new(name, m.mesh().clone(), *at).map_err(what)?,
             )),
-            Data::HalfSpace { normal, .. } => {
+            (_, Source::HalfSpace(normal)) => {
                 let n = Vec3::from_array(*normal);
                 let world = Vec3::from_array(at.rotation.map(|row| {
                     row[0] * n.to_array()[0] + row[1] * n.to_array()[1] + row[2] * n.to_array()[2]
@@ -417,13 +418,13 @@ impl ChainScene {
                     .map_err(what)?,
                 ));
             }
-            Data::Compound { given, .. } => {
+            (_, Source::Compound(given)) => {
                 for (part, pose) in given {
                     let placed = compose(at, &rust_pose(pose));
                     self.make(part.get(), &placed, name, out)?;
                 }
             }
-            Data::Hull(_) => {
+            _ => {
                 return Err(PyValueError::new_err(
                     "body: a convex_hull is not a chain scene obstacle; give its triangles as \
                      mesh(vertices, faces)",

@@ -1,6 +1,7 @@
 //! The exceptions: one base class, one subclass per kind of Rust error, each
 //! carrying the Rust error's message.
 
+use motion_bound::ca::{ArgError, Problem};
 use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -57,42 +58,34 @@ pub(crate) fn input(e: motion_bound::InputError) -> PyErr {
     InputError::new_err(e.to_string())
 }
 
+/// An argument's refusal as the crate words it ([`ArgError`]: the
+/// argument's name first, as the C library says it too): `MeshError` for a
+/// mesh's, `ValueError` for a compound's part of the wrong kind,
+/// `InputError` otherwise.
+pub(crate) fn arg(e: ArgError) -> PyErr {
+    match e.problem() {
+        Problem::Mesh(_) => MeshError::new_err(e.to_string()),
+        Problem::NotAPart(_) => PyValueError::new_err(e.to_string()),
+        _ => InputError::new_err(e.to_string()),
+    }
+}
+
 /// The core's refusal of the argument `what` (a name such as `"start"` or
 /// `"starts[3]"`), as `InputError` whose message begins with it.
 pub(crate) fn input_in(what: &str) -> impl Fn(motion_bound::InputError) -> PyErr + '_ {
-    move |e| InputError::new_err(format!("{what}: {e}"))
+    move |e| arg(ArgError::input(what)(e))
 }
 
 /// The argument `name`'s value `x` if it is a finite number at least 0 (a
 /// length: a radius, a half extent, a rounding), else `InputError` naming it.
 pub(crate) fn length_arg(x: f64, name: &str) -> PyResult<f64> {
-    if !x.is_finite() {
-        Err(InputError::new_err(format!(
-            "{name} is not finite (got {x})"
-        )))
-    } else if x < 0.0 {
-        Err(InputError::new_err(format!("{name} is negative (got {x})")))
-    } else {
-        Ok(x)
-    }
+    ArgError::length(x, name).map_err(arg)
 }
 
 /// The argument `name`'s value `x` if it is finite and above 0 (a duration,
 /// a cylinder's half height), else `InputError` naming it.
 pub(crate) fn positive_arg(x: f64, name: &str) -> PyResult<f64> {
-    if x.is_finite() && x > 0.0 {
-        Ok(x)
-    } else {
-        Err(InputError::new_err(format!(
-            "{name} must be positive and finite (got {x})"
-        )))
-    }
-}
-
-/// A mesh's refusal of the argument `what`, as `MeshError` whose message
-/// begins with it.
-pub(crate) fn mesh_in(what: &str) -> impl Fn(motion_bound::MeshError) -> PyErr + '_ {
-    move |e| MeshError::new_err(format!("{what}: {e}"))
+    ArgError::positive(x, name).map_err(arg)
 }
 
 /// A query's refusal, as `QueryError` (or `InputError` for the input it

@@ -373,8 +373,8 @@ pub(crate) fn pair_error(e: motion_bound::ca::CaError, kinds: (&str, &str)) -> P
 
 /// One pair query (the pair's stepper made for it, its workspace reused).
 fn run(
-    a: &crate::body::Prepared<'_>,
-    b: &crate::body::Prepared<'_>,
+    a: &motion_bound::ca::PreparedShape<'_, f64>,
+    b: &motion_bound::ca::PreparedShape<'_, f64>,
     ma: &RigidMotion<f64>,
     mb: &RigidMotion<f64>,
     p: &CaParams<f64>,

@@ -25,6 +25,11 @@ mod shape;
 // The one dispatch over pairs of kinds.
 #[cfg(feature = "alloc")]
 mod dispatch;
+// The owning twin of the vocabulary, and its arguments' errors.
+#[cfg(feature = "alloc")]
+mod arg_error;
+#[cfg(feature = "alloc")]
+mod owned;
 // The loop, its parameters and its answer; what a stepper answers.
 mod driver;
 mod outcome;
@@ -64,7 +69,11 @@ pub use mesh::{MeshConvexPair, MeshPair, MeshWorkspace, TraversalStats};
 #[cfg(feature = "alloc")]
 #[deprecated(since = "0.1.0", note = "renamed `MeshConvexPair`")]
 pub type MeshShapePair<'a, T> = MeshConvexPair<'a, T>;
+#[cfg(feature = "alloc")]
+pub use arg_error::{ArgError, Problem};
 pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness, Work};
+#[cfg(feature = "alloc")]
+pub use owned::{Hull, OwnedCompound, OwnedMesh, OwnedPart, OwnedShape, PreparedShape, Primitive};
 pub use params::{BoundChoice, CaError, CaParams, MeshParams, Parameter, WitnessSearch};
 #[cfg(feature = "alloc")]
 pub use shape::{Compound, Part, Shape, ShapeKind};

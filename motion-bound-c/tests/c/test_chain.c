@@ -328,7 +328,7 @@ static void test_queries_against_geometry(void) {
     FAILS(mb_chain_scene_add_obstacle(meshes, hull, pole_pose(), NULL, NULL),
           MB_STATUS_QUERY_ERROR, "convex hull");
     OK(mb_shape_ball(0.1, &ball));
-    const mb_shape *parts[1] = {ball};
+    mb_shape *parts[1] = {ball};
     mb_pose here = pole_pose();
     OK(mb_shape_compound(parts, &here, 1, &compound));
     FAILS(mb_chain_scene_add_obstacle(meshes, compound, pole_pose(), NULL, NULL),

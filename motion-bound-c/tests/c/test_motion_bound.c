@@ -29,14 +29,21 @@ static int checks = 0;
 
 /* A call that must succeed. */
 #define OK(call) CHECK((call) == MB_STATUS_OK, "%s", #call)
-/* A call that must fail with `status` and leave a message. */
-#define FAILS(call, status)                                                    \
+/* Failing calls whose message was checked. */
+static int message_checks = 0;
+
+/* A call that must fail with `status` and a message beginning with `text`:
+ * the argument's name (with its index in an array, its field in a struct:
+ * `parts[1]`, `start.rotation`, `queries[2].motion_b`), then what was wrong,
+ * as the Python module words it. */
+#define FAILS(call, status, text)                                              \
     do {                                                                       \
         mb_status s_ = (call);                                                 \
         CHECK(s_ == (status), "%s gave %d, expected %d", #call, (int)s_,      \
               (int)(status));                                                  \
-        CHECK(strlen(mb_last_error_message()) > 0, "no message after %s",      \
-              #call);                                                          \
+        message_checks++;                                                      \
+        CHECK(strncmp(mb_last_error_message(), (text), strlen(text)) == 0,     \
+              "%s: the message does not begin with \"%s\"", #call, (text));    \
     } while (0)
 
 static const mb_quat IDENTITY = {1.0, 0.0, 0.0, 0.0};
@@ -274,9 +281,11 @@ static void test_convex_on_ground(void) {
 
     /* Two half-spaces: no stepper. A turning half-space: refused. */
     FAILS(mb_time_of_impact(ground_z, still, ground_y, still, NULL, &r),
-          MB_STATUS_QUERY_ERROR);
+          MB_STATUS_QUERY_ERROR,
+          "shape_a, shape_b: no stepper takes this pair of shape kinds (two");
     FAILS(mb_time_of_impact(ground_z, fall_z_spin, box, still, NULL, &r),
-          MB_STATUS_QUERY_ERROR);
+          MB_STATUS_QUERY_ERROR,
+          "motion_a, motion_b: a half-space may only translate (no start");
 
     mb_shape *shapes[] = {ground_z, ground_y, ball, box, hull, rbox, rhull};
     for (size_t i = 0; i < sizeof shapes / sizeof shapes[0]; i++)
@@ -376,21 +385,32 @@ static void test_meshes(void) {
     memcpy(nan_v, v, sizeof v);
     nan_v[4] = NAN;
     mb_shape *m = (mb_shape *)0x1;
-    FAILS(mb_shape_mesh(v, 4, bad_t, 2, MB_MESH_SOLIDITY_AUTO, &m), MB_STATUS_INVALID_MESH);
+    FAILS(mb_shape_mesh(v, 4, bad_t, 2, MB_MESH_SOLIDITY_AUTO, &m), MB_STATUS_INVALID_MESH,
+          "indices: triangle 1 names vertex 4, but the mesh has 4 vertices");
     CHECK(m == (mb_shape *)0x1, "out written on failure");
-    FAILS(mb_shape_mesh(v, 0, t, 2, MB_MESH_SOLIDITY_AUTO, &m), MB_STATUS_INVALID_SIZE);
-    FAILS(mb_shape_mesh(v, 4, t, 0, MB_MESH_SOLIDITY_AUTO, &m), MB_STATUS_INVALID_SIZE);
-    FAILS(mb_shape_mesh(NULL, 4, t, 2, MB_MESH_SOLIDITY_AUTO, &m), MB_STATUS_NULL_POINTER);
-    FAILS(mb_shape_mesh(v, 4, NULL, 2, MB_MESH_SOLIDITY_AUTO, &m), MB_STATUS_NULL_POINTER);
-    FAILS(mb_shape_mesh(nan_v, 4, t, 2, MB_MESH_SOLIDITY_AUTO, &m), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_shape_mesh(v, 4, t, 2, 7, &m), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_shape_mesh(v, 4, t, 2, MB_MESH_SOLIDITY_SOLID, &m), MB_STATUS_INVALID_MESH);
-    FAILS(mb_shape_mesh(v, 4, t, 2, MB_MESH_SOLIDITY_AUTO, NULL), MB_STATUS_NULL_POINTER);
+    FAILS(mb_shape_mesh(v, 0, t, 2, MB_MESH_SOLIDITY_AUTO, &m), MB_STATUS_INVALID_SIZE,
+          "vertex_count is 0 (no vertices)");
+    FAILS(mb_shape_mesh(v, 4, t, 0, MB_MESH_SOLIDITY_AUTO, &m), MB_STATUS_INVALID_SIZE,
+          "triangle_count is 0 (no triangles)");
+    FAILS(mb_shape_mesh(NULL, 4, t, 2, MB_MESH_SOLIDITY_AUTO, &m), MB_STATUS_NULL_POINTER,
+          "vertices is NULL");
+    FAILS(mb_shape_mesh(v, 4, NULL, 2, MB_MESH_SOLIDITY_AUTO, &m), MB_STATUS_NULL_POINTER,
+          "indices is NULL");
+    FAILS(mb_shape_mesh(nan_v, 4, t, 2, MB_MESH_SOLIDITY_AUTO, &m), MB_STATUS_INVALID_INPUT,
+          "vertices: invalid mesh vertex: vertex 1 is not finite");
+    FAILS(mb_shape_mesh(v, 4, t, 2, 7, &m), MB_STATUS_INVALID_INPUT,
+          "solidity is 7: 0 (auto), 1 (solid) or 2 (hollow)");
+    FAILS(mb_shape_mesh(v, 4, t, 2, MB_MESH_SOLIDITY_SOLID, &m), MB_STATUS_INVALID_MESH,
+          "solidity: mesh is not closed, so it cannot be solid: 4 unpaired and 0");
+    FAILS(mb_shape_mesh(v, 4, t, 2, MB_MESH_SOLIDITY_AUTO, NULL), MB_STATUS_NULL_POINTER,
+          "out is NULL");
     FAILS(mb_shape_mesh(v, SIZE_MAX / 2, t, 2, MB_MESH_SOLIDITY_AUTO, &m),
-          MB_STATUS_INVALID_SIZE);
+          MB_STATUS_INVALID_SIZE,
+          "vertex_count is ");
     CHECK(m == (mb_shape *)0x1, "out written on failure");
     /* Rounding a mesh: refused. */
-    FAILS(mb_shape_rounded(plate, 0.1, &m), MB_STATUS_INVALID_INPUT);
+    FAILS(mb_shape_rounded(plate, 0.1, &m), MB_STATUS_INVALID_INPUT,
+          "shape is not convex: only convex shapes (primitives and hulls) can be");
 
     mb_shape *shapes[] = {plate, box, cube, hollow, solid, pebble};
     for (size_t i = 0; i < sizeof shapes / sizeof shapes[0]; i++)
@@ -415,7 +435,7 @@ static void test_compound(void) {
     double h = sqrt(0.5);
     mb_pose quarter_z = {{0, 0, 0}, {h, 0, 0, h}};
     mb_pose cube_at = {{0, 0, -1}, {h, 0, 0, h}};
-    const mb_shape *parts[4] = {ball, ball, bar, cube};
+    mb_shape *parts[4] = {ball, ball, bar, cube};
     mb_pose poses[4] = {at(-1, 0, 0), at(1, 0, 0), quarter_z, cube_at};
     OK(mb_shape_compound(parts, poses, 4, &compound));
     OK(mb_shape_compound(parts, poses, 2, &balls_only));
@@ -438,17 +458,24 @@ static void test_compound(void) {
 
     /* Bad compounds. */
     mb_shape *m = NULL;
-    FAILS(mb_shape_compound(parts, poses, 0, &m), MB_STATUS_INVALID_SIZE);
-    FAILS(mb_shape_compound(NULL, poses, 2, &m), MB_STATUS_NULL_POINTER);
-    FAILS(mb_shape_compound(parts, NULL, 2, &m), MB_STATUS_NULL_POINTER);
-    const mb_shape *with_ground[2] = {ball, ground};
-    FAILS(mb_shape_compound(with_ground, poses, 2, &m), MB_STATUS_INVALID_INPUT);
-    const mb_shape *with_null[2] = {ball, NULL};
-    FAILS(mb_shape_compound(with_null, poses, 2, &m), MB_STATUS_NULL_POINTER);
-    const mb_shape *with_freed[2] = {ball, cube}; /* freed above */
-    FAILS(mb_shape_compound(with_freed, poses, 2, &m), MB_STATUS_INVALID_HANDLE);
+    FAILS(mb_shape_compound(parts, poses, 0, &m), MB_STATUS_INVALID_SIZE,
+          "count is 0: a compound needs a part");
+    FAILS(mb_shape_compound(NULL, poses, 2, &m), MB_STATUS_NULL_POINTER,
+          "parts is NULL");
+    FAILS(mb_shape_compound(parts, NULL, 2, &m), MB_STATUS_NULL_POINTER,
+          "poses is NULL");
+    mb_shape *with_ground[2] = {ball, ground};
+    FAILS(mb_shape_compound(with_ground, poses, 2, &m), MB_STATUS_INVALID_INPUT,
+          "parts[1] is a half_space: a compound's parts are meshes and convex");
+    mb_shape *with_null[2] = {ball, NULL};
+    FAILS(mb_shape_compound(with_null, poses, 2, &m), MB_STATUS_NULL_POINTER,
+          "parts[1] is NULL");
+    mb_shape *with_freed[2] = {ball, cube}; /* freed above */
+    FAILS(mb_shape_compound(with_freed, poses, 2, &m), MB_STATUS_INVALID_HANDLE,
+          "parts[1] is not a live shape: never made by this library, or freed");
     mb_pose bad_pose[2] = {at(0, 0, 0), {{0, 0, 0}, {0, 0, 0, 0}}};
-    FAILS(mb_shape_compound(parts, bad_pose, 2, &m), MB_STATUS_INVALID_INPUT);
+    FAILS(mb_shape_compound(parts, bad_pose, 2, &m), MB_STATUS_INVALID_INPUT,
+          "poses[1].rotation: quaternion has zero length");
     CHECK(m == NULL, "out written on failure");
 
     OK(mb_shape_free(ball));
@@ -503,24 +530,37 @@ static void test_motions(void) {
     /* Bad motions. */
     mb_motion *bad = (mb_motion *)0x1;
     mb_pose zero_q = {{0, 0, 0}, {0, 0, 0, 0}};
-    FAILS(mb_motion_from_velocities(zero_q, ZERO, ZERO, 1.0, &bad), MB_STATUS_INVALID_INPUT);
+    FAILS(mb_motion_from_velocities(zero_q, ZERO, ZERO, 1.0, &bad), MB_STATUS_INVALID_INPUT,
+          "start.rotation: quaternion has zero length");
     FAILS(mb_motion_from_velocities(start, v3(NAN, 0, 0), ZERO, 1.0, &bad),
-          MB_STATUS_INVALID_INPUT);
+          MB_STATUS_INVALID_INPUT,
+          "linear.x is not finite (got NaN)");
     FAILS(mb_motion_from_velocities(start, ZERO, v3(0, INFINITY, 0), 1.0, &bad),
-          MB_STATUS_INVALID_INPUT);
-    FAILS(mb_motion_from_velocities(start, ZERO, ZERO, 0.0, &bad), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_motion_from_velocities(start, ZERO, ZERO, NAN, &bad), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_motion_from_velocities(start, ZERO, ZERO, 1.0, NULL), MB_STATUS_NULL_POINTER);
-    FAILS(mb_motion_between(start, zero_q, 1.0, &bad), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_motion_between(start, end, -1.0, &bad), MB_STATUS_INVALID_INPUT);
+          MB_STATUS_INVALID_INPUT,
+          "angular.y is not finite (got inf)");
+    FAILS(mb_motion_from_velocities(start, ZERO, ZERO, 0.0, &bad), MB_STATUS_INVALID_INPUT,
+          "duration must be positive and finite (got 0)");
+    FAILS(mb_motion_from_velocities(start, ZERO, ZERO, NAN, &bad), MB_STATUS_INVALID_INPUT,
+          "duration must be positive and finite (got NaN)");
+    FAILS(mb_motion_from_velocities(start, ZERO, ZERO, 1.0, NULL), MB_STATUS_NULL_POINTER,
+          "out is NULL");
+    FAILS(mb_motion_between(start, zero_q, 1.0, &bad), MB_STATUS_INVALID_INPUT,
+          "end.rotation: quaternion has zero length");
+    FAILS(mb_motion_between(start, end, -1.0, &bad), MB_STATUS_INVALID_INPUT,
+          "duration must be positive and finite (got -1)");
     FAILS(mb_motion_between_about(start, end, 1.0, v3(NAN, 0, 0), &bad),
-          MB_STATUS_INVALID_INPUT);
+          MB_STATUS_INVALID_INPUT,
+          "local_centre.x is not finite (got NaN)");
     FAILS(mb_motion_about_centre(v3(0, 0, NAN), ZERO, IDENTITY, ZERO, ZERO, 1.0, &bad),
-          MB_STATUS_INVALID_INPUT);
+          MB_STATUS_INVALID_INPUT,
+          "centre.z is not finite (got NaN)");
     CHECK(bad == (mb_motion *)0x1, "out written on failure");
-    FAILS(mb_motion_point_at(m, ZERO, NAN, &p), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_motion_point_at(m, ZERO, 0.0, NULL), MB_STATUS_NULL_POINTER);
-    FAILS(mb_motion_point_at(NULL, ZERO, 0.0, &p), MB_STATUS_NULL_POINTER);
+    FAILS(mb_motion_point_at(m, ZERO, NAN, &p), MB_STATUS_INVALID_INPUT,
+          "t is not finite (got NaN)");
+    FAILS(mb_motion_point_at(m, ZERO, 0.0, NULL), MB_STATUS_NULL_POINTER,
+          "out is NULL");
+    FAILS(mb_motion_point_at(NULL, ZERO, 0.0, &p), MB_STATUS_NULL_POINTER,
+          "motion is NULL");
     OK(mb_motion_free(m));
 }
 
@@ -534,65 +574,111 @@ static void test_bad_handles_and_params(void) {
     memset(&r, 0x5a, sizeof r);
     mb_report before = r;
 
-    FAILS(mb_time_of_impact(NULL, m, ball, m, NULL, &r), MB_STATUS_NULL_POINTER);
-    FAILS(mb_time_of_impact(ball, NULL, ball, m, NULL, &r), MB_STATUS_NULL_POINTER);
-    FAILS(mb_time_of_impact(ball, m, NULL, m, NULL, &r), MB_STATUS_NULL_POINTER);
-    FAILS(mb_time_of_impact(ball, m, ball, NULL, NULL, &r), MB_STATUS_NULL_POINTER);
-    FAILS(mb_time_of_impact(ball, m, ball, m, NULL, NULL), MB_STATUS_NULL_POINTER);
+    FAILS(mb_time_of_impact(NULL, m, ball, m, NULL, &r), MB_STATUS_NULL_POINTER,
+          "shape_a is NULL");
+    FAILS(mb_time_of_impact(ball, NULL, ball, m, NULL, &r), MB_STATUS_NULL_POINTER,
+          "motion_a is NULL");
+    FAILS(mb_time_of_impact(ball, m, NULL, m, NULL, &r), MB_STATUS_NULL_POINTER,
+          "shape_b is NULL");
+    FAILS(mb_time_of_impact(ball, m, ball, NULL, NULL, &r), MB_STATUS_NULL_POINTER,
+          "motion_b is NULL");
+    FAILS(mb_time_of_impact(ball, m, ball, m, NULL, NULL), MB_STATUS_NULL_POINTER,
+          "out is NULL");
     /* A motion passed as a shape, a shape as a motion: the registry knows. */
     FAILS(mb_time_of_impact((const mb_shape *)m, m, ball, m, NULL, &r),
-          MB_STATUS_INVALID_HANDLE);
+          MB_STATUS_INVALID_HANDLE,
+          "shape_a is a handle of another type (not a shape)");
     FAILS(mb_time_of_impact(ball, (const mb_motion *)ball, ball, m, NULL, &r),
-          MB_STATUS_INVALID_HANDLE);
+          MB_STATUS_INVALID_HANDLE,
+          "motion_a is a handle of another type (not a motion)");
     /* A pointer this library never gave out (never read). */
     double junk[16] = {0};
     FAILS(mb_time_of_impact((const mb_shape *)junk, m, ball, m, NULL, &r),
-          MB_STATUS_INVALID_HANDLE);
-    FAILS(mb_shape_free((mb_shape *)junk), MB_STATUS_INVALID_HANDLE);
+          MB_STATUS_INVALID_HANDLE,
+          "shape_a is not a live shape: never made by this library, or freed");
+    FAILS(mb_shape_free((mb_shape *)junk), MB_STATUS_INVALID_HANDLE,
+          "shape is not a live shape: never made by this library, or freed");
     /* Motions over different intervals. */
-    FAILS(mb_time_of_impact(ball, m, ball, other, NULL, &r), MB_STATUS_QUERY_ERROR);
+    FAILS(mb_time_of_impact(ball, m, ball, other, NULL, &r), MB_STATUS_QUERY_ERROR,
+          "motion_a, motion_b: the two motions have different intervals");
     /* Parameters out of range. */
     mb_params p = mb_params_default();
     p.contact_distance = 0.0;
-    FAILS(mb_time_of_impact(ball, m, ball, other, &p, &r), MB_STATUS_INVALID_PARAMETER);
+    FAILS(mb_time_of_impact(ball, m, ball, other, &p, &r), MB_STATUS_INVALID_PARAMETER,
+          "params: parameter out of range: contact_distance (positive and finite)");
     p = mb_params_default();
     p.contact_distance = NAN;
-    FAILS(mb_time_of_impact(ball, m, ball, m, &p, &r), MB_STATUS_INVALID_PARAMETER);
+    FAILS(mb_time_of_impact(ball, m, ball, m, &p, &r), MB_STATUS_INVALID_PARAMETER,
+          "params: parameter out of range: contact_distance (positive and finite)");
     p = mb_params_default();
     p.max_iterations = 0;
-    FAILS(mb_time_of_impact(ball, m, ball, m, &p, &r), MB_STATUS_INVALID_PARAMETER);
+    FAILS(mb_time_of_impact(ball, m, ball, m, &p, &r), MB_STATUS_INVALID_PARAMETER,
+          "params: parameter out of range: max_iterations (at least 1)");
     p = mb_params_default();
     p.horizon_factor = 0.5;
-    FAILS(mb_time_of_impact(ball, m, ball, m, &p, &r), MB_STATUS_INVALID_PARAMETER);
+    FAILS(mb_time_of_impact(ball, m, ball, m, &p, &r), MB_STATUS_INVALID_PARAMETER,
+          "params: parameter out of range: horizon_factor (0 or above 1)");
     p = mb_params_default();
     p.bound = 3;
-    FAILS(mb_time_of_impact(ball, m, ball, m, &p, &r), MB_STATUS_INVALID_PARAMETER);
+    FAILS(mb_time_of_impact(ball, m, ball, m, &p, &r), MB_STATUS_INVALID_PARAMETER,
+          "params.bound is 3: 0 (auto), 1 (NEVQ) or 2 (EVQ)");
     p = mb_params_default();
     p.witness = 2;
-    FAILS(mb_time_of_impact(ball, m, ball, m, &p, &r), MB_STATUS_INVALID_PARAMETER);
+    FAILS(mb_time_of_impact(ball, m, ball, m, &p, &r), MB_STATUS_INVALID_PARAMETER,
+          "params.witness is 2: 0 (closest) or 1 (first)");
     CHECK(memcmp(&r, &before, sizeof r) == 0, "the report was written on failure");
 
     /* Bad shapes. */
     mb_shape *s = NULL;
-    FAILS(mb_shape_ball(NAN, &s), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_shape_ball(-1.0, &s), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_shape_ball(INFINITY, &s), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_shape_ball(1.0, NULL), MB_STATUS_NULL_POINTER);
-    FAILS(mb_shape_capsule(NAN, 1.0, &s), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_shape_cuboid(v3(1, NAN, 1), &s), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_shape_cylinder(0.0, 1.0, &s), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_shape_cone(1.0, -1.0, &s), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_shape_half_space(ZERO, &s), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_shape_half_space(v3(0, 0, NAN), &s), MB_STATUS_INVALID_INPUT);
+    FAILS(mb_shape_ball(NAN, &s), MB_STATUS_INVALID_INPUT,
+          "radius is not finite (got NaN)");
+    FAILS(mb_shape_ball(-1.0, &s), MB_STATUS_INVALID_INPUT,
+          "radius is negative (got -1)");
+    FAILS(mb_shape_ball(INFINITY, &s), MB_STATUS_INVALID_INPUT,
+          "radius is not finite (got inf)");
+    FAILS(mb_shape_ball(1.0, NULL), MB_STATUS_NULL_POINTER,
+          "out is NULL");
+    FAILS(mb_shape_capsule(NAN, 1.0, &s), MB_STATUS_INVALID_INPUT,
+          "half_height is not finite (got NaN)");
+    FAILS(mb_shape_cuboid(v3(1, NAN, 1), &s), MB_STATUS_INVALID_INPUT,
+          "half_extents[1] is not finite (got NaN)");
+    /* The example, word for word as Python says it. */
+    FAILS(mb_shape_cuboid(v3(1, -2, 1), &s), MB_STATUS_INVALID_INPUT,
+          "half_extents[1] is negative (got -2)");
+    FAILS(mb_shape_capsule(1.0, -0.5, &s), MB_STATUS_INVALID_INPUT,
+          "radius is negative (got -0.5)");
+    mb_pose far = {{1e300, 0, 0}, {1, 0, 0, 0}};
+    mb_motion *mm = NULL;
+    FAILS(mb_motion_between(far, far, 1.0, &mm), MB_STATUS_INVALID_INPUT,
+          "start: pose exceeds the largest supported magnitude");
+    mb_pose inf_at = {{0, INFINITY, 0}, {1, 0, 0, 0}};
+    FAILS(mb_motion_between(at(0, 0, 0), inf_at, 1.0, &mm), MB_STATUS_INVALID_INPUT,
+          "end.translation.y is not finite (got inf)");
+    FAILS(mb_shape_cylinder(0.0, 1.0, &s), MB_STATUS_INVALID_INPUT,
+          "half_height must be positive and finite (got 0)");
+    FAILS(mb_shape_cone(1.0, -1.0, &s), MB_STATUS_INVALID_INPUT,
+          "radius is negative (got -1)");
+    FAILS(mb_shape_half_space(ZERO, &s), MB_STATUS_INVALID_INPUT,
+          "normal: direction has zero length");
+    FAILS(mb_shape_half_space(v3(0, 0, NAN), &s), MB_STATUS_INVALID_INPUT,
+          "normal: direction is not finite");
     const double pts[6] = {0, 0, 0, 1, NAN, 0};
-    FAILS(mb_shape_convex_hull(pts, 2, &s), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_shape_convex_hull(pts, 0, &s), MB_STATUS_INVALID_SIZE);
-    FAILS(mb_shape_convex_hull(NULL, 2, &s), MB_STATUS_NULL_POINTER);
-    FAILS(mb_shape_rounded(ball, NAN, &s), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_shape_rounded(ball, -0.1, &s), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_shape_rounded(NULL, 0.1, &s), MB_STATUS_NULL_POINTER);
-    FAILS(mb_shape_get_kind(NULL, NULL), MB_STATUS_NULL_POINTER);
-    FAILS(mb_shape_get_kind(ball, NULL), MB_STATUS_NULL_POINTER);
+    FAILS(mb_shape_convex_hull(pts, 2, &s), MB_STATUS_INVALID_INPUT,
+          "points: vertex 1 is not finite");
+    FAILS(mb_shape_convex_hull(pts, 0, &s), MB_STATUS_INVALID_SIZE,
+          "point_count is 0 (no points)");
+    FAILS(mb_shape_convex_hull(NULL, 2, &s), MB_STATUS_NULL_POINTER,
+          "points is NULL");
+    FAILS(mb_shape_rounded(ball, NAN, &s), MB_STATUS_INVALID_INPUT,
+          "radius is not finite (got NaN)");
+    FAILS(mb_shape_rounded(ball, -0.1, &s), MB_STATUS_INVALID_INPUT,
+          "radius is negative (got -0.1)");
+    FAILS(mb_shape_rounded(NULL, 0.1, &s), MB_STATUS_NULL_POINTER,
+          "shape is NULL");
+    FAILS(mb_shape_get_kind(NULL, NULL), MB_STATUS_NULL_POINTER,
+          "shape is NULL");
+    FAILS(mb_shape_get_kind(ball, NULL), MB_STATUS_NULL_POINTER,
+          "out is NULL");
     CHECK(s == NULL, "out written on failure");
 
     /* A message names the problem. */
@@ -606,14 +692,19 @@ static void test_bad_handles_and_params(void) {
     OK(mb_motion_free(NULL));
     OK(mb_scene_free(NULL));
     OK(mb_scene_result_free(NULL));
-    FAILS(mb_motion_free((mb_motion *)ball), MB_STATUS_INVALID_HANDLE);
+    FAILS(mb_motion_free((mb_motion *)ball), MB_STATUS_INVALID_HANDLE,
+          "motion is a handle of another type (not a motion)");
     OK(mb_shape_free(ball));
-    FAILS(mb_shape_free(ball), MB_STATUS_INVALID_HANDLE);
+    FAILS(mb_shape_free(ball), MB_STATUS_INVALID_HANDLE,
+          "shape is not a live shape: never made by this library, or freed");
     mb_shape_kind k;
-    FAILS(mb_shape_get_kind(ball, &k), MB_STATUS_INVALID_HANDLE);
+    FAILS(mb_shape_get_kind(ball, &k), MB_STATUS_INVALID_HANDLE,
+          "shape is not a live shape: never made by this library, or freed");
     OK(mb_motion_free(m));
-    FAILS(mb_motion_point_at(m, ZERO, 0.0, &(mb_vec3){0}), MB_STATUS_INVALID_HANDLE);
-    FAILS(mb_motion_free(m), MB_STATUS_INVALID_HANDLE);
+    FAILS(mb_motion_point_at(m, ZERO, 0.0, &(mb_vec3){0}), MB_STATUS_INVALID_HANDLE,
+          "motion is not a live motion: never made by this library, or freed");
+    FAILS(mb_motion_free(m), MB_STATUS_INVALID_HANDLE,
+          "motion is not a live motion: never made by this library, or freed");
     OK(mb_motion_free(other));
 }
 
@@ -676,31 +767,46 @@ static void test_scene(void) {
     CHECK(seen_fall && seen_rod, "the two contacts listed (%d, %d) among %zu pairs",
           seen_fall, seen_rod, count);
     mb_scene_pair pair;
-    FAILS(mb_scene_result_get(result, count, &pair), MB_STATUS_OUT_OF_RANGE);
+    FAILS(mb_scene_result_get(result, count, &pair), MB_STATUS_OUT_OF_RANGE,
+          "index 2 is past the end of a result of 2 pairs");
     FAILS(mb_scene_result_get(result, 0, NULL), count > 0 ? MB_STATUS_NULL_POINTER
-                                                          : MB_STATUS_OUT_OF_RANGE);
+                                                          : MB_STATUS_OUT_OF_RANGE,
+          "out is NULL");
     /* Parameters out of range. */
     mb_params p = mb_params_default();
     p.contact_distance = -1.0;
     mb_scene_result *bad = NULL;
-    FAILS(mb_scene_query(scene, &p, &bad), MB_STATUS_INVALID_PARAMETER);
-    FAILS(mb_scene_query(scene, NULL, NULL), MB_STATUS_NULL_POINTER);
+    FAILS(mb_scene_query(scene, &p, &bad), MB_STATUS_INVALID_PARAMETER,
+          "params: parameter out of range: contact_distance (positive and finite)");
+    FAILS(mb_scene_query(scene, NULL, NULL), MB_STATUS_NULL_POINTER,
+          "out is NULL");
     CHECK(bad == NULL, "out written on failure");
 
     /* A motion over another interval; bad scenes. */
     mb_motion *longer = moving(at(0, 0, 0), ZERO, ZERO, 2.0);
-    FAILS(mb_scene_add(scene, ground, longer, NULL), MB_STATUS_QUERY_ERROR);
-    FAILS(mb_scene_add(NULL, ground, still, NULL), MB_STATUS_NULL_POINTER);
-    FAILS(mb_scene_add(scene, NULL, still, NULL), MB_STATUS_NULL_POINTER);
-    FAILS(mb_scene_add(scene, ground, NULL, NULL), MB_STATUS_NULL_POINTER);
-    FAILS(mb_scene_add((mb_scene *)result, ground, still, NULL), MB_STATUS_INVALID_HANDLE);
-    FAILS(mb_scene_len(NULL, &n), MB_STATUS_NULL_POINTER);
-    FAILS(mb_scene_result_len(NULL, &count), MB_STATUS_NULL_POINTER);
-    FAILS(mb_scene_result_len((mb_scene_result *)scene, &count), MB_STATUS_INVALID_HANDLE);
+    FAILS(mb_scene_add(scene, ground, longer, NULL), MB_STATUS_QUERY_ERROR,
+          "motion is over [0, 2], the scene over [0, 1]");
+    FAILS(mb_scene_add(NULL, ground, still, NULL), MB_STATUS_NULL_POINTER,
+          "scene is NULL");
+    FAILS(mb_scene_add(scene, NULL, still, NULL), MB_STATUS_NULL_POINTER,
+          "shape is NULL");
+    FAILS(mb_scene_add(scene, ground, NULL, NULL), MB_STATUS_NULL_POINTER,
+          "motion is NULL");
+    FAILS(mb_scene_add((mb_scene *)result, ground, still, NULL), MB_STATUS_INVALID_HANDLE,
+          "scene is a handle of another type (not a scene)");
+    FAILS(mb_scene_len(NULL, &n), MB_STATUS_NULL_POINTER,
+          "scene is NULL");
+    FAILS(mb_scene_result_len(NULL, &count), MB_STATUS_NULL_POINTER,
+          "result is NULL");
+    FAILS(mb_scene_result_len((mb_scene_result *)scene, &count), MB_STATUS_INVALID_HANDLE,
+          "result is a handle of another type (not a scene result)");
     mb_scene *s2 = NULL;
-    FAILS(mb_scene_new(0.0, &s2), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_scene_new(NAN, &s2), MB_STATUS_INVALID_INPUT);
-    FAILS(mb_scene_new(1.0, NULL), MB_STATUS_NULL_POINTER);
+    FAILS(mb_scene_new(0.0, &s2), MB_STATUS_INVALID_INPUT,
+          "duration must be positive and finite (got 0)");
+    FAILS(mb_scene_new(NAN, &s2), MB_STATUS_INVALID_INPUT,
+          "duration must be positive and finite (got NaN)");
+    FAILS(mb_scene_new(1.0, NULL), MB_STATUS_NULL_POINTER,
+          "out is NULL");
     /* Two half-spaces in a scene: the pair is skipped, not an error. */
     OK(mb_scene_new(1.0, &s2));
     OK(mb_scene_add(s2, ground, still, NULL));
@@ -713,9 +819,11 @@ static void test_scene(void) {
     /* The scene freed first: its result stays valid. */
     OK(mb_scene_free(scene));
     OK(mb_scene_result_len(result, &count));
-    FAILS(mb_scene_free(scene), MB_STATUS_INVALID_HANDLE);
+    FAILS(mb_scene_free(scene), MB_STATUS_INVALID_HANDLE,
+          "scene is not a live scene: never made by this library, or freed");
     OK(mb_scene_result_free(result));
-    FAILS(mb_scene_result_free(result), MB_STATUS_INVALID_HANDLE);
+    FAILS(mb_scene_result_free(result), MB_STATUS_INVALID_HANDLE,
+          "result is not a live scene result: never made by this library, or freed");
     OK(mb_scene_result_free(r2));
     OK(mb_scene_free(s2));
     mb_shape *shapes[] = {ground, small};
@@ -773,6 +881,122 @@ static void test_threads(void) {
     OK(mb_motion_free(b));
 }
 
+/* Two doubles equal, NaN equal to NaN. */
+static int same(double a, double b) { return a == b || (isnan(a) && isnan(b)); }
+
+static int same_vec(mb_vec3 a, mb_vec3 b) {
+    return same(a.x, b.x) && same(a.y, b.y) && same(a.z, b.z);
+}
+
+/* Two reports alike in every field. */
+static int same_report(mb_report a, mb_report b) {
+    return a.outcome == b.outcome && a.criterion == b.criterion && same(a.time, b.time) &&
+           same_vec(a.witness_a, b.witness_a) && same_vec(a.witness_b, b.witness_b) &&
+           same_vec(a.normal, b.normal) && same(a.distance, b.distance) &&
+           same(a.resolution, b.resolution) && a.node_pairs == b.node_pairs &&
+           a.triangle_pairs == b.triangle_pairs && a.iterations == b.iterations;
+}
+
+/*
+ * The batch on every core: 240 pairs (balls of several radii approaching
+ * head-on at several gaps and speeds, every sixth pair moving apart, and a
+ * mesh cube falling onto the ground every tenth), each answer against its
+ * closed form and against the same query made alone, field by field.
+ */
+static void test_batch(void) {
+    enum { N = 240 };
+    mb_shape *balls[3] = {NULL, NULL, NULL};
+    double radii[3] = {0.25, 0.5, 1.0};
+    for (int i = 0; i < 3; i++) OK(mb_shape_ball(radii[i], &balls[i]));
+    mb_shape *ground = NULL, *cube = cube_mesh(0.5, MB_MESH_SOLIDITY_AUTO);
+    OK(mb_shape_half_space(v3(0, 0, 1), &ground));
+    mb_motion *still = moving(at(0, 0, 0), ZERO, ZERO, 4.0);
+    mb_motion *ma[N], *mb_[N];
+    mb_pair_query q[N];
+    double gaps[N], speeds[N];
+    int kinds[N]; /* 0 approach, 1 apart, 2 cube on ground */
+    for (int k = 0; k < N; k++) {
+        double ra = radii[k % 3], rb = radii[(k / 3) % 3];
+        double gap = 0.5 + 0.05 * (k % 17), speed = 0.5 + 0.25 * (k % 5);
+        kinds[k] = k % 10 == 9 ? 2 : (k % 6 == 5 ? 1 : 0);
+        gaps[k] = gap;
+        speeds[k] = speed;
+        if (kinds[k] == 2) {
+            /* The cube's bottom (half side 0.5) at gap over the ground. */
+            ma[k] = moving(at(0, 0, 0.5 + gap), v3(0, 0, -speed), ZERO, 4.0);
+            mb_[k] = NULL;
+            q[k] = (mb_pair_query){cube, ma[k], ground, still};
+            continue;
+        }
+        double dir = kinds[k] == 1 ? -1.0 : 1.0;
+        ma[k] = moving(at(0, 0, 0), v3(dir * speed / 2, 0, 0), ZERO, 4.0);
+        mb_[k] = moving(at(ra + rb + gap, 0, 0), v3(-dir * speed / 2, 0, 0), ZERO, 4.0);
+        q[k] = (mb_pair_query){balls[k % 3], ma[k], balls[(k / 3) % 3], mb_[k]};
+    }
+    mb_report out[N];
+    memset(out, 0, sizeof out);
+    OK(mb_time_of_impact_batch(q, N, NULL, out));
+    mb_params p = mb_params_default();
+    for (int k = 0; k < N; k++) {
+        char what[64];
+        snprintf(what, sizeof what, "batch query %d", k);
+        if (kinds[k] == 1) {
+            CHECK(out[k].outcome == MB_OUTCOME_SEPARATED, "%s: outcome %d", what,
+                  (int)out[k].outcome);
+        } else {
+            expect_linear(what, out[k], gaps[k], speeds[k], p.contact_distance);
+        }
+        mb_report alone = toi(q[k].shape_a, q[k].motion_a, q[k].shape_b, q[k].motion_b, NULL);
+        CHECK(same_report(alone, out[k]), "%s: the batch says t = %.17g, the query alone %.17g",
+              what, out[k].time, alone.time);
+    }
+    /* A batch of none writes nothing (and may pass NULL arrays). */
+    OK(mb_time_of_impact_batch(NULL, 0, NULL, NULL));
+
+    /* Bad batches: the failing query is named, nothing is written. */
+    mb_report untouched[3];
+    memset(untouched, 0x5a, sizeof untouched);
+    mb_pair_query bad[3] = {q[0], q[1], q[2]};
+    bad[1].shape_b = NULL;
+    FAILS(mb_time_of_impact_batch(bad, 3, NULL, untouched), MB_STATUS_NULL_POINTER,
+          "queries[1].shape_b is NULL");
+    mb_motion *longer = moving(at(0, 0, 0), ZERO, ZERO, 5.0);
+    bad[1] = q[1];
+    bad[2].motion_b = longer;
+    FAILS(mb_time_of_impact_batch(bad, 3, NULL, untouched), MB_STATUS_QUERY_ERROR,
+          "queries[2].motion_a, queries[2].motion_b: the two motions have different "
+          "intervals");
+    bad[2] = q[2];
+    bad[0].shape_a = ground;
+    bad[0].shape_b = ground;
+    FAILS(mb_time_of_impact_batch(bad, 3, NULL, untouched), MB_STATUS_QUERY_ERROR,
+          "queries[0].shape_a, queries[0].shape_b: no stepper takes this pair");
+    bad[0] = q[0];
+    bad[0].motion_a = (const mb_motion *)ground;
+    FAILS(mb_time_of_impact_batch(bad, 3, NULL, untouched), MB_STATUS_INVALID_HANDLE,
+          "queries[0].motion_a is a handle of another type (not a motion)");
+    FAILS(mb_time_of_impact_batch(q, 3, NULL, NULL), MB_STATUS_NULL_POINTER, "out is NULL");
+    FAILS(mb_time_of_impact_batch(NULL, 3, NULL, untouched), MB_STATUS_NULL_POINTER,
+          "queries is NULL");
+    p.contact_distance = -1.0;
+    FAILS(mb_time_of_impact_batch(q, 3, &p, untouched), MB_STATUS_INVALID_PARAMETER,
+          "params: parameter out of range: contact_distance");
+    unsigned char *bytes = (unsigned char *)untouched;
+    int written = 0;
+    for (size_t i = 0; i < sizeof untouched; i++) written |= bytes[i] != 0x5a;
+    CHECK(!written, "a failing batch wrote to out");
+
+    for (int k = 0; k < N; k++) {
+        OK(mb_motion_free(ma[k]));
+        if (mb_[k]) OK(mb_motion_free(mb_[k]));
+    }
+    for (int i = 0; i < 3; i++) OK(mb_shape_free(balls[i]));
+    OK(mb_shape_free(ground));
+    OK(mb_shape_free(cube));
+    OK(mb_motion_free(still));
+    OK(mb_motion_free(longer));
+}
+
 int main(void) {
     CHECK(strcmp(mb_last_error_message(), "") == 0, "a message before any failure");
     test_version_and_params();
@@ -785,10 +1009,13 @@ int main(void) {
     test_bad_handles_and_params();
     test_scene();
     test_threads();
+    test_batch();
     if (failures) {
         fprintf(stderr, "%d of %d checks FAILED\n", failures, checks);
         return 1;
     }
-    printf("all %d checks passed\n", checks);
+    CHECK(message_checks >= 30, "only %d messages checked", message_checks);
+    printf("all %d checks passed (the messages of %d failing calls among them)\n", checks,
+           message_checks);
     return 0;
 }

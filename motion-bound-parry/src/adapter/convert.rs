@@ -2,10 +2,10 @@
 //! and pose conversions, [`rigid_motion`], and [`Body`] (a shape converted
 //! once: a convex shape, a half-space, a mesh with its tree, a compound).
 
-use motion_bound::ca::{Compound, Part, Shape as Ours};
+use motion_bound::ca::{Hull, OwnedMesh, OwnedPart, OwnedShape, Shape as Ours};
 use motion_bound::{
-    BallTree, Convex, HalfSpace as OurHalfSpace, InputError, Isometry, MeshError, Point3,
-    RigidMotion, Rotation, TimeInterval, TriMesh, Vec3, VertexSet,
+    Convex, HalfSpace as OurHalfSpace, InputError, Isometry, MeshError, Point3, RigidMotion,
+    Rotation, TimeInterval, TriMesh, Vec3,
 };
 
 use super::error::CastError;
@@ -152,7 +152,7 @@ fn kind_name(shape: &dyn Shape) -> &'static str {
 /// solid mesh) is solid (`TriMesh::try_solid`): a body starting inside it is
 /// in contact; one that is not closed and wound outward is
 /// [`CastError::NotSolid`].
-fn tree(shape: &dyn Shape, pose: Option<&Pose>) -> Result<Option<BallTree<Real>>, CastError> {
+fn tree(shape: &dyn Shape, pose: Option<&Pose>) -> Result<Option<OwnedMesh<Real>>, CastError> {
     let TypedShape::TriMesh(m) = shape.as_typed_shape() else {
         return Ok(None);
     };
@@ -161,93 +161,46 @@ fn tree(shape: &dyn Shape, pose: Option<&Pose>) -> Result<Option<BallTree<Real>>
         .iter()
         .map(|v| vec3(pose.map_or(*v, |p| *p * *v)).to_array())
         .collect();
-    if !m.flags().contains(TriMeshFlags::ORIENTED) {
-        return Ok(Some(BallTree::try_new(&vertices, m.indices())?));
-    }
-    let solid = TriMesh::try_new(vertices, m.indices().to_vec())
-        .map_err(|e| match e {
-            MeshError::Vertex(e) => CastError::Input(e),
-            MeshError::IndexOutOfRange {
-                triangle, index, ..
-            } => CastError::Input(InputError::TriangleIndexOutOfRange { triangle, index }),
-            _ => CastError::Input(InputError::NoTriangles),
-        })?
-        .try_solid()
-        .map_err(|e| CastError::NotSolid {
+    let mesh = TriMesh::try_new(vertices, m.indices().to_vec()).map_err(|e| match e {
+        MeshError::Vertex(e) => CastError::Input(e),
+        MeshError::IndexOutOfRange {
+            triangle, index, ..
+        } => CastError::Input(InputError::TriangleIndexOutOfRange { triangle, index }),
+        _ => CastError::Input(InputError::NoTriangles),
+    })?;
+    let mesh = if m.flags().contains(TriMeshFlags::ORIENTED) {
+        mesh.try_solid().map_err(|e| CastError::NotSolid {
             closed: !matches!(e, MeshError::NotClosed { .. }),
-        })?;
-    Ok(Some(BallTree::try_from_mesh(&solid)?))
+        })?
+    } else {
+        mesh
+    };
+    Ok(Some(OwnedMesh::try_from_mesh(mesh)?))
 }
 
-/// One part of a converted body.
-#[derive(Debug)]
-enum Piece {
-    Convex(Convex<'static, Real>),
-    Polytope {
-        vertices: Vec<[Real; 3]>,
-        radius: Real,
-        place: Option<Isometry<Real>>,
-    },
-    Mesh(BallTree<Real>),
-}
-
-impl Piece {
-    /// The piece of `shape` at `pose` in its body's frame (`None`: the
-    /// body's own frame).
-    fn new(shape: &dyn Shape, pose: Option<&Pose>) -> Result<Self, CastError> {
-        if let Some((c, own)) = convex(shape)? {
-            let place = match (pose, own) {
-                (None, None) => return Ok(Self::Convex(c)),
-                (Some(p), None) => *p,
-                (None, Some(p)) => p,
-                (Some(p), Some(o)) => *p * o,
-            };
-            return Ok(Self::Convex(c.try_placed(isometry(&place)?)?));
-        }
-        if let Some((vertices, radius)) = polytope(shape) {
-            let place = pose.map(isometry).transpose()?;
-            let piece = Self::Polytope {
-                vertices,
-                radius,
-                place,
-            };
-            // Checked once here, so that a query never meets a bad vertex.
-            piece.convex()?;
-            return Ok(piece);
-        }
-        if let Some(t) = tree(shape, pose)? {
-            return Ok(Self::Mesh(t));
-        }
-        Err(CastError::Unsupported(kind_name(shape)))
+/// The part of a body that `shape` is, at `pose` in the body's frame
+/// (`None`: the body's own frame).
+fn part(shape: &dyn Shape, pose: Option<&Pose>) -> Result<OwnedPart<Real>, CastError> {
+    if let Some((c, own)) = convex(shape)? {
+        let place = match (pose, own) {
+            (None, None) => return Ok(OwnedPart::Convex(c)),
+            (Some(p), None) => *p,
+            (None, Some(p)) => p,
+            (Some(p), Some(o)) => *p * o,
+        };
+        return Ok(OwnedPart::Convex(c.try_placed(isometry(&place)?)?));
     }
-
-    fn convex(&self) -> Result<Option<Convex<'_, Real>>, InputError> {
-        match self {
-            Self::Convex(c) => Ok(Some(*c)),
-            Self::Polytope {
-                vertices,
-                radius,
-                place,
-            } => {
-                let mut c = Convex::polytope(VertexSet::try_new(vertices)?);
-                if *radius != 0.0 {
-                    c = c.try_rounded(*radius)?;
-                }
-                if let Some(p) = place {
-                    c = c.try_placed(*p)?;
-                }
-                Ok(Some(c))
-            }
-            Self::Mesh(_) => Ok(None),
-        }
+    if let Some((vertices, radius)) = polytope(shape) {
+        let place = pose.map(isometry).transpose()?;
+        // Checked once here, so that a query never meets a bad vertex.
+        let hull = Hull::try_new(vertices, radius)?;
+        hull.convex(place)?;
+        return Ok(OwnedPart::Hull(hull, place.unwrap_or(Isometry::IDENTITY)));
     }
-
-    fn part(&self) -> Result<Part<'_, Real>, InputError> {
-        Ok(match self {
-            Self::Mesh(t) => Part::Mesh(t),
-            other => Part::Convex(other.convex()?.expect("a convex piece")),
-        })
+    if let Some(m) = tree(shape, pose)? {
+        return Ok(OwnedPart::Mesh(m));
     }
+    Err(CastError::Unsupported(kind_name(shape)))
 }
 
 /// A parry shape converted once into `motion-bound`'s terms: a convex
@@ -258,14 +211,7 @@ impl Piece {
 /// [`ShapeCache`]: super::ShapeCache
 #[derive(Debug)]
 pub struct Body {
-    kind: BodyKind,
-}
-
-#[derive(Debug)]
-enum BodyKind {
-    Piece(Piece),
-    HalfSpace(OurHalfSpace<Real>),
-    Compound(Vec<Piece>),
+    shape: OwnedShape<Real>,
 }
 
 impl Body {
@@ -278,13 +224,15 @@ impl Body {
     /// vertex, an empty mesh, a negative radius).
     pub fn try_new(shape: &dyn Shape) -> Result<Self, CastError> {
         let shape = Swept::see_through(shape);
-        let kind = match shape.as_typed_shape() {
-            TypedShape::HalfSpace(h) => BodyKind::HalfSpace(OurHalfSpace::try_new(vec3(h.normal))?),
+        let shape = match shape.as_typed_shape() {
+            TypedShape::HalfSpace(h) => {
+                OwnedShape::HalfSpace(OurHalfSpace::try_new(vec3(h.normal))?)
+            }
             TypedShape::Compound(c) => {
-                let mut pieces = Vec::with_capacity(c.shapes().len());
-                for (pose, part) in c.shapes() {
-                    let part = Swept::see_through(part.as_ref());
-                    match part.as_typed_shape() {
+                let mut parts = Vec::with_capacity(c.shapes().len());
+                for (pose, p) in c.shapes() {
+                    let p = Swept::see_through(p.as_ref());
+                    match p.as_typed_shape() {
                         TypedShape::Compound(_) => {
                             return Err(CastError::Unsupported("a compound within a compound"))
                         }
@@ -293,25 +241,27 @@ impl Body {
                         }
                         _ => {}
                     }
-                    pieces.push(Piece::new(part, Some(pose))?);
+                    parts.push(part(p, Some(pose))?);
                 }
-                if pieces.is_empty() {
-                    return Err(InputError::EmptyCompound.into());
-                }
-                BodyKind::Compound(pieces)
+                OwnedShape::try_compound_of(parts)?
             }
-            _ => BodyKind::Piece(Piece::new(shape, None)?),
+            _ => match part(shape, None)? {
+                OwnedPart::Convex(c) => OwnedShape::Convex(c),
+                OwnedPart::Hull(h, _) => OwnedShape::Hull(h), // at the identity
+                OwnedPart::Mesh(m) => OwnedShape::Mesh(m),
+                _ => return Err(CastError::Unsupported(kind_name(shape))),
+            },
         };
-        Ok(Self { kind })
+        Ok(Self { shape })
     }
 
     /// Whether this body holds a mesh tree (the conversions worth caching).
     #[must_use]
     pub fn has_tree(&self) -> bool {
-        match &self.kind {
-            BodyKind::Piece(p) => matches!(p, Piece::Mesh(_)),
-            BodyKind::Compound(ps) => ps.iter().any(|p| matches!(p, Piece::Mesh(_))),
-            BodyKind::HalfSpace(_) => false,
+        match &self.shape {
+            OwnedShape::Mesh(_) => true,
+            OwnedShape::Compound(c) => c.parts().iter().any(|p| matches!(p, OwnedPart::Mesh(_))),
+            _ => false,
         }
     }
 
@@ -321,19 +271,7 @@ impl Body {
     /// None for a body made by [`try_new`](Self::try_new) (its vertices
     /// were checked then); the `Result` carries `motion-bound`'s checks.
     pub fn with_shape<R>(&self, f: impl FnOnce(Ours<'_, Real>) -> R) -> Result<R, CastError> {
-        match &self.kind {
-            BodyKind::HalfSpace(h) => Ok(f(Ours::HalfSpace(*h))),
-            BodyKind::Piece(Piece::Mesh(t)) => Ok(f(Ours::Mesh(t))),
-            BodyKind::Piece(p) => Ok(f(Ours::Convex(p.convex()?.expect("a convex piece")))),
-            BodyKind::Compound(pieces) => {
-                let parts = pieces
-                    .iter()
-                    .map(Piece::part)
-                    .collect::<Result<Vec<_>, _>>()?;
-                let compound = Compound::try_new(parts)?;
-                Ok(f(Ours::Compound(&compound)))
-            }
-        }
+        Ok(f(self.shape.prepare()?.shape()))
     }
 }
 
@@ -346,7 +284,7 @@ pub(super) fn in_world_axes(
     body: &Body,
     motion: &NonlinearRigidMotion,
 ) -> Option<(Body, NonlinearRigidMotion)> {
-    let BodyKind::HalfSpace(h) = &body.kind else {
+    let OwnedShape::HalfSpace(h) = &body.shape else {
         return None;
     };
     if motion.angvel != Vector::ZERO || motion.start.rotation == parry::math::Rotation::IDENTITY {
@@ -356,7 +294,7 @@ pub(super) fn in_world_axes(
     let h = OurHalfSpace::try_new(vec3(normal)).ok()?;
     Some((
         Body {
-            kind: BodyKind::HalfSpace(h),
+            shape: OwnedShape::HalfSpace(h),
         },
         NonlinearRigidMotion::new(
             Pose::from_translation(motion.start.translation),
