@@ -73,7 +73,7 @@ def test_through_a_scene_symmetric_spins_are_separated():
         start[2, 3] += 0.5 * k - 1.0
         scene.add(body, mb.Motion(start, linear, angular, DT))
     reports = scene.query(contact_distance=CONTACT)
-    assert len(reports) == 5
+    # Every body against the floor (body 0), and any neighbours the broad phase kept.
+    assert sorted(b for a, b, _ in reports if a == 0) == [1, 2, 3, 4, 5]
     for a, b, report in reports:
-        assert a == 0, (a, b)
-        assert report.outcome == "separated" and report.iterations <= 3, (b, report.outcome, report.iterations)
+        assert report.outcome == "separated" and report.iterations <= 3, (a, b, report.outcome, report.iterations)
