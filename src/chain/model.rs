@@ -7,6 +7,7 @@ use alloc::vec::Vec;
 use core::fmt;
 
 use crate::geometry::gjk::ConvexPolytope;
+use crate::geometry::hull_vertices::hull_vertex_indices;
 use crate::math::pose::mat_mul;
 use crate::{BallTree, Float, Pose, TriMesh, Vec3};
 
@@ -332,9 +333,15 @@ impl<T: Float> ChainBuilder<T> {
             let reach = tree
                 .as_ref()
                 .map_or(T::ZERO, |t: &BallTree<T>| t.whole.reach);
-            let hull = mesh
-                .as_ref()
-                .map_or_else(Vec::new, |m| distinct(m.vertices()));
+            // The distinct vertices reduced to a superset of the hull's
+            // vertices (Lemma 13.7, item 5): the same hull, fewer supports.
+            let hull = mesh.as_ref().map_or_else(Vec::new, |m| {
+                let all = distinct(m.vertices());
+                hull_vertex_indices(&all)
+                    .into_iter()
+                    .map(|i| all[i])
+                    .collect()
+            });
             let hull_rho = ConvexPolytope::try_new(&hull, Pose::IDENTITY)
                 .ok()
                 .map(|p| p.radius_l1());
@@ -377,8 +384,9 @@ pub(crate) struct LinkData<T> {
     pub(crate) name: String,
     pub(crate) mesh: Option<TriMesh<T>>,
     pub(crate) tree: Option<BallTree<T>>,
-    /// The mesh's distinct vertices (link frame): their convex hull holds
-    /// every triangle, the cover of `proofs/13-chains.md`, Lemma 13.7.
+    /// The mesh's distinct vertices (link frame) less points proven inside
+    /// the hull of the others: their convex hull holds every triangle, the
+    /// cover of `proofs/13-chains.md`, Lemma 13.7.
     pub(crate) hull: Vec<[T; 3]>,
     /// The hull's bound of its vertices' 1-norms, from
     /// [`ConvexPolytope::try_new`] at build (`None`: no geometry, or a vertex

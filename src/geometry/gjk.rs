@@ -80,8 +80,9 @@ impl<T: Float, S: SupportMap<T> + ?Sized> SupportMap<T> for &S {
 /// placed in the world by a [`Pose`] as `R r_i + x`.
 ///
 /// The support map works in the body frame: it maps `dir` by `R^T`, takes
-/// the vertex with the largest dot product (the first on ties; `O(N)`, no
-/// hill climbing), and places it with [`Pose::transform_point`].
+/// a vertex with the largest computed dot product (on ties, any of them;
+/// `O(N)` in four interleaved lanes, no hill climbing), and places it with
+/// [`Pose::transform_point`].
 ///
 /// # Support slack
 /// Let `m` be the largest `|R_kl|`, `rho >= max_i |r_i|_1` (computed and
@@ -198,16 +199,38 @@ impl<'a, T: Float> ConvexPolytope<'a, T> {
 impl<T: Float> SupportMap<T> for ConvexPolytope<'_, T> {
     fn support(&self, dir: Vec3<T>) -> Point3<T> {
         let d = self.pose.inverse_transform_vector(dir);
-        let mut best = Vec3::from_array(self.vertices[0]);
-        let mut best_dot = best.dot(d);
-        for r in &self.vertices[1..] {
-            let r = Vec3::from_array(*r);
-            let s = r.dot(d);
-            if s > best_dot {
-                best = r;
-                best_dot = s;
+        let dot = |r: &[T; 3]| Vec3::from_array(*r).dot(d);
+        // A vertex of the largest computed dot product (which one among ties
+        // does not matter: `slack` bounds every vertex's rounding), found in
+        // four independent lanes (vertex `4 c + k` in lane `k`), selects
+        // without branches, so that the scan's chains overlap.
+        let first = dot(&self.vertices[0]);
+        let (mut bd, mut bi) = ([first; 4], [0usize; 4]);
+        let chunks = self.vertices.chunks_exact(4);
+        let rest = chunks.remainder();
+        for (c, chunk) in chunks.enumerate() {
+            for k in 0..4 {
+                let s = dot(&chunk[k]);
+                let better = s > bd[k];
+                bd[k] = if better { s } else { bd[k] };
+                bi[k] = if better { 4 * c + k } else { bi[k] };
             }
         }
+        let base = self.vertices.len() - rest.len();
+        for (k, r) in rest.iter().enumerate() {
+            let s = dot(r);
+            if s > bd[0] {
+                bd[0] = s;
+                bi[0] = base + k;
+            }
+        }
+        let mut lane = 0;
+        for k in 1..4 {
+            if bd[k] > bd[lane] {
+                lane = k;
+            }
+        }
+        let best = Vec3::from_array(self.vertices[bi[lane]]);
         Point3::from_vec3(self.pose.transform_point(best))
     }
 

@@ -13,6 +13,9 @@
 
 pub(crate) mod closest;
 pub(crate) mod gjk;
+// A point set's hull vertices (a superset), for the chains' link hulls.
+#[cfg(feature = "alloc")]
+pub(crate) mod hull_vertices;
 mod intersect;
 mod predicates;
 mod scale;
