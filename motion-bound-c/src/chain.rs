@@ -895,15 +895,7 @@ pub unsafe extern "C" fn mb_chain_scene_add_points(
             ));
         }
         for (i, p) in pts.iter().enumerate() {
-            for (k, x) in p.array().iter().enumerate() {
-                if !x.is_finite() {
-                    let axis = ["x", "y", "z"][k];
-                    return Err(Failure::new(
-                        MbStatus::InvalidInput,
-                        format!("points[{i}].{axis} is not finite (got {x})"),
-                    ));
-                }
-            }
+            p.checked(&format!("points[{i}]"))?;
         }
         if !(radius.is_finite() && radius >= 0.0) {
             return Err(Failure::new(
