@@ -11,14 +11,18 @@
 //! - A ball and a cube inside a hollow box (inside the hull): they meet
 //!   its walls where the samples say and never before; a solid box is in
 //!   contact at the start.
-//! - Open, dented, flat-sided-twice and two-piece meshes do not take the
-//!   hull.
+//! - A solid box and icosahedron met by other meshes (a ring, a plate of
+//!   two triangles, a solid box) through `AnyPair`, which takes the solid
+//!   one as its hull: never late, missed or early.
+//! - Open, dented, flipped and two-piece meshes do not take the hull.
 
 #[path = "common/shape_truth.rs"]
 mod shape_truth;
 
 use motion_bound::bodies::torus;
-use motion_bound::ca::{time_of_impact, CaOutcome, CaParams, ContactCriterion, MeshConvexPair};
+use motion_bound::ca::{
+    time_of_impact, AnyPair, CaOutcome, CaParams, ContactCriterion, MeshConvexPair, Shape,
+};
 use motion_bound::testkit::toi::Rng;
 use motion_bound::{BallTree, Convex, HalfSpace, RigidMotion, TriMesh, Vec3};
 use shape_truth::{first_sampled_contact, touch_at, Solid};
@@ -307,4 +311,93 @@ fn open_dented_and_two_piece_meshes_do_not_take_the_hull() {
         assert!(!tree.is_closed_convex(), "{name}");
         assert!(!MeshConvexPair::new(tree, ball).steps_hull(), "{name}");
     }
+}
+
+#[test]
+fn solid_closed_convex_meshes_meet_other_meshes_as_their_hulls() {
+    let mut rng = Rng::new(57);
+    let solid = |m: TriMesh<f64>| m.try_solid().expect("closed, outward");
+    let solids = [
+        (
+            "solid box",
+            solid(mesh(cuboid_mesh([0.3, 0.2, 0.25], [0.0; 3]))),
+        ),
+        ("solid icosahedron", solid(mesh(icosahedron(0.35)))),
+    ];
+    let plate = mesh((
+        vec![
+            [-0.8, 0.0, -0.8],
+            [0.8, 0.0, -0.8],
+            [0.8, 0.0, 0.8],
+            [-0.8, 0.0, 0.8],
+        ],
+        vec![[0, 1, 2], [0, 2, 3]],
+    ));
+    let others = [
+        ("ring", torus::<f64>(0.5, 0.12, 16, 6).expect("ring")),
+        ("plate", plate),
+        (
+            "solid box",
+            solid(mesh(cuboid_mesh([0.2, 0.3, 0.1], [0.0; 3]))),
+        ),
+    ];
+    let (mut n, mut contacts, mut sampled) = (0, 0, 0);
+    for (name_a, a) in &solids {
+        let tree_a = BallTree::try_from_mesh(a).expect("tree");
+        let truth_a = Solid::mesh(a);
+        for (name_b, b) in &others {
+            let tree_b = BallTree::try_from_mesh(b).expect("tree");
+            let truth_b = Solid::mesh(b);
+            for q in 0..4 {
+                let start = rng.direction().map(|x| x * rng.range(1.3, 1.7));
+                let aim = rng.direction().map(|x| x * 0.2 * rng.unit());
+                let v = [0, 1, 2].map(|k| aim[k] - start[k]);
+                let spin = [0.0, 3.0, 20.0, 8.0][q % 4];
+                let wa = rng.direction().map(|x| x * spin * rng.unit());
+                let wb = rng.direction().map(|x| x * spin * 0.25 * rng.unit());
+                let ma = RigidMotion::try_from_arrays(start, v, wa).expect("motion");
+                let mb = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], wb).expect("motion");
+                let params = CaParams::default().with_contact_distance(CD);
+                // Either order: the solid mesh first or second.
+                let (report, truth) = if q % 2 == 0 {
+                    let mut pair = AnyPair::try_new(Shape::Mesh(&tree_a), Shape::Mesh(&tree_b))
+                        .expect("a pair");
+                    let r = time_of_impact(&mut pair, &ma, &mb, &params).expect("a query");
+                    (
+                        r,
+                        first_sampled_contact(&truth_a, &ma, &truth_b, &mb, (0.0, 1.0), SAMPLES),
+                    )
+                } else {
+                    let mut pair = AnyPair::try_new(Shape::Mesh(&tree_b), Shape::Mesh(&tree_a))
+                        .expect("a pair");
+                    let r = time_of_impact(&mut pair, &mb, &ma, &params).expect("a query");
+                    (
+                        r,
+                        first_sampled_contact(&truth_b, &mb, &truth_a, &ma, (0.0, 1.0), SAMPLES),
+                    )
+                };
+                let what = format!("{name_a} vs {name_b} query {q}: {report:?}, sampled {truth:?}");
+                match (report.outcome.earliest_possible_contact(), truth) {
+                    (None, Some(_)) => panic!("MISSED: {what}"),
+                    (Some(t), Some(g)) => assert!(t <= g, "LATE: {what}"),
+                    _ => {}
+                }
+                if let CaOutcome::Contact {
+                    contact,
+                    criterion: ContactCriterion::Distance,
+                } = report.outcome
+                {
+                    assert!(
+                        within_contact_distance(&truth_a, &ma, &truth_b, &mb, contact.time, 1e-9),
+                        "EARLY: {what}"
+                    );
+                }
+                contacts += usize::from(report.outcome.contact().is_some());
+                sampled += usize::from(truth.is_some());
+                n += 1;
+            }
+        }
+    }
+    println!("{n} mesh pairs: {contacts} contacts, {sampled} sampled");
+    assert!(sampled * 2 >= n, "too few sampled contacts for power");
 }

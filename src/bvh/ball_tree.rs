@@ -365,6 +365,13 @@ impl<T: Float> BallTree<T> {
         self.hull.is_some()
     }
 
+    /// A solid closed convex mesh's hull, the body itself (Lemma 12.9):
+    /// a polytope of its vertices.
+    pub(crate) fn solid_hull(&self) -> Option<crate::Convex<'_, T>> {
+        let v = self.hull.as_deref().filter(|_| self.solid)?;
+        Some(crate::Convex::polytope(crate::VertexSet::from_validated(v)))
+    }
+
     /// The root's ball: contains the whole mesh.
     #[must_use]
     pub fn root_ball(&self) -> &BoundingBall<T> {
