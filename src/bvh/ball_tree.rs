@@ -83,8 +83,8 @@ pub struct BallTree<T> {
     /// Every triangle whole.
     pub(crate) whole: Hierarchy<T>,
     /// Long triangles cut into pieces, when the mesh has any: built when a
-    /// query first needs them.
-    pieces: LazyPieces<T>,
+    /// query first needs them (boxed: most trees never do).
+    pieces: alloc::boxed::Box<LazyPieces<T>>,
     triangles: usize,
     /// The largest and the median leaf ball radius of `whole`.
     leaf_max: f64,
@@ -240,7 +240,7 @@ impl<T: Float> BallTree<T> {
             hull: crate::mesh::closed_convex_vertices(vertices, triangles),
             leaf_max: radii.last().copied().unwrap_or(0.0),
             leaf_median: radii.get(radii.len() / 2).copied().unwrap_or(0.0),
-            pieces: LazyPieces::new(piece_plan, &whole),
+            pieces: alloc::boxed::Box::new(LazyPieces::new(piece_plan, &whole)),
             whole,
             triangles: triangles.len(),
         })
