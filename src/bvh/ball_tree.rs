@@ -75,15 +75,16 @@ const PIECES_RATIO: f64 = 4.0;
 /// nodes split at the median of one key (centroids along the widest axis),
 /// except the small ones near the leaves, which take the best of the three
 /// keys by a cheaper measure (boxes along the node's own axes). It is built
-/// with the tree (about 38 ms for the 13,768 pieces of a 12-triangle board here), so
-/// that making a pair ([`MeshPair::new`](crate::ca::MeshPair::new)) costs
-/// nothing whatever the meshes.
+/// the first time a pair needs it (about 38 ms for the 13,768 pieces of a
+/// 12-triangle board here; with the `std` feature, else with the tree), so
+/// that a mesh met only by convex shapes never pays for it.
 #[derive(Clone, Debug)]
 pub struct BallTree<T> {
     /// Every triangle whole.
     pub(crate) whole: Hierarchy<T>,
-    /// Long triangles cut into pieces, when the mesh has any.
-    pieces: Option<Hierarchy<T>>,
+    /// Long triangles cut into pieces, when the mesh has any: built when a
+    /// query first needs them (boxed: most trees never do).
+    pieces: alloc::boxed::Box<LazyPieces<T>>,
     triangles: usize,
     /// The largest and the median leaf ball radius of `whole`.
     leaf_max: f64,
@@ -93,6 +94,10 @@ pub struct BallTree<T> {
     /// One point of each connected component of the triangles
     /// (`mesh::component_points`): what is tested inside a solid mesh.
     pub(crate) probes: Vec<[T; 3]>,
+    /// The vertices of a closed convex mesh (`mesh::closed_convex_vertices`,
+    /// `proofs/12-shapes.md`, Lemma 12.9): its triangles are the boundary of
+    /// their hull.
+    pub(crate) hull: Option<Vec<[T; 3]>>,
 }
 
 impl<T: Float> BallTree<T> {
@@ -232,9 +237,10 @@ impl<T: Float> BallTree<T> {
         Ok(Self {
             solid: false,
             probes: crate::mesh::component_points(vertices, triangles),
+            hull: crate::mesh::closed_convex_vertices(vertices, triangles),
             leaf_max: radii.last().copied().unwrap_or(0.0),
             leaf_median: radii.get(radii.len() / 2).copied().unwrap_or(0.0),
-            pieces: piece_plan.and_then(|plan| build_pieces(&whole, plan)),
+            pieces: alloc::boxed::Box::new(LazyPieces::new(piece_plan, &whole)),
             whole,
             triangles: triangles.len(),
         })
@@ -244,10 +250,54 @@ impl<T: Float> BallTree<T> {
     /// of pieces when this mesh has one and its largest leaf is more than
     /// four times the other's median leaf, else the one of whole triangles.
     pub(crate) fn against(&self, other: &Self) -> &Hierarchy<T> {
-        match &self.pieces {
-            Some(p) if self.leaf_max > PIECES_RATIO * other.leaf_median => p,
-            _ => &self.whole,
+        if self.pieces.plan.is_none() || self.leaf_max <= PIECES_RATIO * other.leaf_median {
+            return &self.whole;
         }
+        self.pieces.get(&self.whole).unwrap_or(&self.whole)
+    }
+}
+
+/// A tree's hierarchy of pieces (`(length, budget)` of [`build_pieces`]),
+/// built the first time a query needs it (with `std`; without, when the
+/// tree is built): a mesh against convex shapes never does, and its build
+/// (about 40 ms for a 12-triangle board) is then not paid at all.
+#[derive(Clone, Debug)]
+struct LazyPieces<T> {
+    plan: Option<(f64, usize)>,
+    #[cfg(feature = "std")]
+    built: std::sync::OnceLock<Option<Hierarchy<T>>>,
+    #[cfg(not(feature = "std"))]
+    built: Option<Hierarchy<T>>,
+}
+
+impl<T: Float> LazyPieces<T> {
+    #[cfg(feature = "std")]
+    fn new(plan: Option<(f64, usize)>, _whole: &Hierarchy<T>) -> Self {
+        Self {
+            plan,
+            built: std::sync::OnceLock::new(),
+        }
+    }
+
+    #[cfg(feature = "std")]
+    fn get(&self, whole: &Hierarchy<T>) -> Option<&Hierarchy<T>> {
+        let plan = self.plan?;
+        self.built
+            .get_or_init(|| build_pieces(whole, plan))
+            .as_ref()
+    }
+
+    #[cfg(not(feature = "std"))]
+    fn new(plan: Option<(f64, usize)>, whole: &Hierarchy<T>) -> Self {
+        Self {
+            plan,
+            built: plan.and_then(|plan| build_pieces(whole, plan)),
+        }
+    }
+
+    #[cfg(not(feature = "std"))]
+    fn get(&self, _whole: &Hierarchy<T>) -> Option<&Hierarchy<T>> {
+        self.built.as_ref()
     }
 }
 
@@ -294,6 +344,34 @@ impl<T: Float> BallTree<T> {
         self.solid
     }
 
+    /// Whether the mesh is closed and convex: its triangles, closed and
+    /// consistently wound, are the whole boundary of the convex hull of at
+    /// most 64 vertices, decided exactly when the tree is built
+    /// (`proofs/12-shapes.md`, Lemma 12.9). A convex shape is then stepped
+    /// against that hull, a polytope, wherever it is certified not to
+    /// overlap the hull's inside ([`MeshConvexPair`](crate::ca::MeshConvexPair)).
+    ///
+    /// ```
+    /// use motion_bound::{BallTree, TriMesh};
+    /// let v = vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// let t = vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]];
+    /// assert!(BallTree::try_new(&v, &t)?.is_closed_convex());
+    /// // Without its slanted face it is open.
+    /// assert!(!BallTree::try_new(&v, &t[..3])?.is_closed_convex());
+    /// # Ok::<(), motion_bound::InputError>(())
+    /// ```
+    #[must_use]
+    pub const fn is_closed_convex(&self) -> bool {
+        self.hull.is_some()
+    }
+
+    /// A solid closed convex mesh's hull, the body itself (Lemma 12.9):
+    /// a polytope of its vertices.
+    pub(crate) fn solid_hull(&self) -> Option<crate::Convex<'_, T>> {
+        let v = self.hull.as_deref().filter(|_| self.solid)?;
+        Some(crate::Convex::polytope(crate::VertexSet::from_validated(v)))
+    }
+
     /// The root's ball: contains the whole mesh.
     #[must_use]
     pub fn root_ball(&self) -> &BoundingBall<T> {
@@ -335,7 +413,7 @@ impl<T: Float> BallTree<T> {
     /// ([`try_with_piece_length`](Self::try_with_piece_length)).
     #[must_use]
     pub fn piece_leaf_count(&self) -> usize {
-        self.pieces.as_ref().map_or(0, |p| p.leaves.len())
+        self.pieces.get(&self.whole).map_or(0, |p| p.leaves.len())
     }
 
     /// The length of the longest root-to-leaf path of the hierarchy of

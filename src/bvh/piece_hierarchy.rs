@@ -1,7 +1,8 @@
 //! A ball tree's second hierarchy, of its long triangles cut into pieces:
 //! the piece length coarsened to fit a budget, then one hierarchy over the
-//! pieces and the triangles short enough to stay whole. Built with the tree,
-//! so that making a pair of trees costs nothing whatever the meshes.
+//! pieces and the triangles short enough to stay whole. Built the first time
+//! a pair of trees needs it (`BallTree`'s `LazyPieces`), so that a mesh met
+//! only by convex shapes never pays for it.
 
 use alloc::vec::Vec;
 

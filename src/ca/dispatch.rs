@@ -18,7 +18,7 @@ use crate::{BoundingBall, Convex, Float, Isometry, PreparedMotion, RigidMotion, 
 ///
 /// | pair of kinds | stepper |
 /// |---|---|
-/// | mesh, mesh | [`MeshPair`] (with [`MeshParams`] from [`try_with_mesh_params`](Self::try_with_mesh_params)) |
+/// | mesh, mesh | [`MeshPair`] (with [`MeshParams`] from [`try_with_mesh_params`](Self::try_with_mesh_params)); against a solid closed convex mesh, [`MeshConvexPair`] with its hull |
 /// | mesh, convex / vertex set / ball / half-space | [`MeshConvexPair`] |
 /// | vertex set, vertex set | [`VertexSetPair`] with GJK ([`bound_counts`](Self::bound_counts)) |
 /// | ball, ball | [`BallPair`] |
@@ -105,7 +105,13 @@ impl<'a, T: Float> AnyPair<'a, T> {
             (Shape::Compound(_), _) | (_, Shape::Compound(_)) => {
                 (Kinds::Compound(CompoundPair::new(a, b)), false)
             }
-            (M(ta), M(tb)) => (Kinds::Meshes(MeshPair::new(ta, tb)), false),
+            // A solid closed convex mesh is its hull (Lemma 12.9): the
+            // other mesh against that polytope.
+            (M(ta), M(tb)) => match (ta.solid_hull(), tb.solid_hull()) {
+                (_, Some(hb)) => (Kinds::MeshConvex(MeshConvexPair::new(ta, hb)), false),
+                (Some(ha), None) => (Kinds::MeshConvex(MeshConvexPair::new(tb, ha)), true),
+                (None, None) => (Kinds::Meshes(MeshPair::new(ta, tb)), false),
+            },
             (Shape::VertexSet(va), Shape::VertexSet(vb)) => {
                 (Kinds::VertexSets(VertexSetPair::with_gjk(va, vb)), false)
             }

@@ -17,7 +17,7 @@ pub(crate) mod gjk;
 #[cfg(feature = "alloc")]
 pub(crate) mod hull_vertices;
 mod intersect;
-mod predicates;
+pub(crate) mod predicates;
 mod scale;
 mod simplex;
 // The exact inside test of closed meshes (solid meshes need `alloc`).

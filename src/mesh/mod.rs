@@ -3,6 +3,7 @@
 //! and the exact inside test, and OFF and STL (and, with the `obj` feature,
 //! OBJ) input.
 
+mod closed_convex;
 mod error;
 #[cfg(feature = "obj")]
 mod obj;
@@ -12,6 +13,7 @@ mod stl;
 mod topology;
 mod trimesh;
 
+pub(crate) use closed_convex::closed_convex_vertices;
 #[cfg(feature = "obj")]
 pub use error::ObjError;
 pub use error::{MeshError, OffError, OffErrorKind};

@@ -60,39 +60,7 @@ impl<T: Float> TriMesh<T> {
     /// ```
     #[must_use]
     pub fn edge_report(&self) -> EdgeReport {
-        let mut report = EdgeReport::default();
-        let mut edges: Vec<(u32, u32)> = Vec::with_capacity(3 * self.triangle_count());
-        for &[a, b, c] in self.triangles() {
-            if a == b || b == c || c == a {
-                report.degenerate_triangles += 1;
-            }
-            for (x, y) in [(a, b), (b, c), (c, a)] {
-                if x != y {
-                    edges.push((x, y));
-                }
-            }
-        }
-        edges.sort_unstable();
-        let mut i = 0;
-        while i < edges.len() {
-            let e = edges[i];
-            let mut j = i + 1;
-            while j < edges.len() && edges[j] == e {
-                j += 1;
-            }
-            report.repeated += j - i - 1;
-            let paired = edges.binary_search(&(e.1, e.0)).is_ok();
-            if !paired {
-                report.unpaired += 1;
-            }
-            // Count an undirected edge once: at its smaller-first direction,
-            // or at its only direction.
-            if e.0 < e.1 || !paired {
-                report.edges += 1;
-            }
-            i = j;
-        }
-        report
+        edge_report_of(self.triangles())
     }
 
     /// `true` when every edge is shared by exactly two triangles running
@@ -155,6 +123,43 @@ fn join(parent: &mut [u32], a: u32, b: u32) {
     if ra != rb {
         parent[ra.max(rb) as usize] = ra.min(rb);
     }
+}
+
+/// [`TriMesh::edge_report`] of the triangles `triangles` (indices only).
+pub(crate) fn edge_report_of(triangles: &[[u32; 3]]) -> EdgeReport {
+    let mut report = EdgeReport::default();
+    let mut edges: Vec<(u32, u32)> = Vec::with_capacity(3 * triangles.len());
+    for &[a, b, c] in triangles {
+        if a == b || b == c || c == a {
+            report.degenerate_triangles += 1;
+        }
+        for (x, y) in [(a, b), (b, c), (c, a)] {
+            if x != y {
+                edges.push((x, y));
+            }
+        }
+    }
+    edges.sort_unstable();
+    let mut i = 0;
+    while i < edges.len() {
+        let e = edges[i];
+        let mut j = i + 1;
+        while j < edges.len() && edges[j] == e {
+            j += 1;
+        }
+        report.repeated += j - i - 1;
+        let paired = edges.binary_search(&(e.1, e.0)).is_ok();
+        if !paired {
+            report.unpaired += 1;
+        }
+        // Count an undirected edge once: at its smaller-first direction,
+        // or at its only direction.
+        if e.0 < e.1 || !paired {
+            report.edges += 1;
+        }
+        i = j;
+    }
+    report
 }
 
 /// One point of each connected component of the triangles, as a set of

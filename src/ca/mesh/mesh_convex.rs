@@ -7,19 +7,20 @@ use super::placed::{Placed, PlacedNode};
 use super::queue::{MeshWorkspace, Origin, Pending, Queued};
 use super::stats::TraversalStats;
 use crate::bvh::{BallTree, Hierarchy};
-use crate::ca::convex_convex::gjk_tolerance;
 use crate::ca::convex_convex::PlacedCore;
+use crate::ca::convex_convex::{certified_gap, gjk_tolerance};
 use crate::ca::convex_half_space::check_half_space;
 use crate::ca::solid::StartCheck;
 use crate::ca::step::placement_error;
 use crate::ca::{
-    CaError, CaParams, CaStep, MeshParams, Shape, StepResult, Witness, WitnessSearch, Work,
+    CaError, CaParams, CaStep, ConvexPair, MeshParams, Shape, StepResult, Witness, WitnessSearch,
+    Work,
 };
 use crate::geometry::gjk::{gjk_distance, GjkParams};
 use crate::rounding::{diff_up, gap_down, least_resolved_reach, resolution_up, step_down, sum_up};
 use crate::{
     BoundKind, BoundingBall, Convex, ConvexPolytope, Direction, Float, HalfSpace, Point3, Pose,
-    PreparedMotion, RigidMotion, Vec3,
+    PreparedMotion, RigidMotion, Vec3, VertexSet,
 };
 
 /// A node whose gap to B is at least this many times its ball's radius is
@@ -42,6 +43,15 @@ enum Other<'a, T> {
 /// step to step (Lemma 9.9, [`with_carry_front`](Self::with_carry_front)):
 /// a step of a query takes the last step's cut of nodes when at most half
 /// of it is stale against the last step's length.
+///
+/// A closed convex mesh ([`BallTree::is_closed_convex`]) is first stepped
+/// as its hull, a polytope ([`ConvexPair`]): the hull holds the triangles,
+/// so a step certified against it is certified against them, and where the
+/// shape is certified not to overlap the hull's inside (a plane between
+/// them), the hull is exactly as far from it as the triangles are, so the
+/// hull's contact is theirs (`proofs/12-shapes.md`, Lemma 12.9). Elsewhere
+/// (a shape inside a hollow mesh, a step the hull cannot certify) the step
+/// descends the tree as for any mesh.
 ///
 /// ```
 /// // `bodies`: the built-in test bodies (feature `bodies`).
@@ -78,6 +88,10 @@ pub struct MeshConvexPair<'a, T> {
     /// workspace is valid for.
     carry_front: bool,
     carry: Option<Carry<T>>,
+    /// A closed convex mesh's hull (Lemma 12.9), and whether the mesh is
+    /// solid (the hull is then the body itself).
+    hull: Option<Convex<'a, T>>,
+    solid: bool,
 }
 
 impl<'a, T: Float> MeshConvexPair<'a, T> {
@@ -92,6 +106,11 @@ impl<'a, T: Float> MeshConvexPair<'a, T> {
             start: StartCheck::new(Shape::Mesh(mesh), Shape::Convex(shape)),
             carry_front: MeshParams::<T>::default().carry_front,
             carry: None,
+            hull: mesh
+                .hull
+                .as_deref()
+                .map(|v| Convex::polytope(VertexSet::from_validated(v))),
+            solid: mesh.is_solid(),
         }
     }
 
@@ -103,6 +122,7 @@ impl<'a, T: Float> MeshConvexPair<'a, T> {
         Self {
             other: Other::Plane(half_space),
             start: StartCheck::new(Shape::Mesh(mesh), Shape::HalfSpace(half_space)),
+            hull: None,
             ..Self::new(mesh, Convex::point())
         }
     }
@@ -130,6 +150,47 @@ impl<'a, T: Float> MeshConvexPair<'a, T> {
     #[must_use]
     pub fn into_workspace(self) -> MeshWorkspace<T> {
         self.ws
+    }
+
+    /// Whether the mesh is stepped as its hull where the shape is outside
+    /// it: a closed convex mesh ([`BallTree::is_closed_convex`]) against a
+    /// convex shape (not a half-space).
+    #[must_use]
+    pub const fn steps_hull(&self) -> bool {
+        self.hull.is_some()
+    }
+
+    /// The step of the hull (Lemma 12.9): a certified `Advance` (the hull
+    /// holds the triangles), or `Touching` where the shape is certified
+    /// not to overlap the hull's inside (a plane between them: the
+    /// distances are then equal) or the mesh is solid (the hull is the
+    /// body); `None` for the tree to decide.
+    fn hull_step(
+        &self,
+        hull: Convex<'a, T>,
+        t: T,
+        (a, b): (&PreparedMotion<T>, &PreparedMotion<T>),
+        params: &CaParams<T>,
+    ) -> Option<StepResult<T>> {
+        let Other::Shape(shape) = self.other else {
+            return None;
+        };
+        match ConvexPair::new(hull, shape).step(t, a, b, params) {
+            r @ StepResult::Advance { .. } => Some(r),
+            r @ StepResult::Touching {
+                normal: Some(n), ..
+            } => {
+                if self.solid {
+                    return Some(r);
+                }
+                let (pa, pb) = (a.motion().pose_at(t), b.motion().pose_at(t));
+                let (ea, _) = placement_error(a.motion(), t, hull.reach());
+                let (eb, _) = placement_error(b.motion(), t, shape.reach());
+                let gap = certified_gap((&hull, &pa, ea), (&shape, &pb, eb), n.get());
+                (gap >= T::ZERO).then_some(r)
+            }
+            _ => None,
+        }
     }
 
     /// The work done since the pair was made.
@@ -198,6 +259,11 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
         b: &PreparedMotion<T>,
         params: &CaParams<T>,
     ) -> StepResult<T> {
+        if let Some(hull) = self.hull {
+            if let Some(r) = self.hull_step(hull, t, (a, b), params) {
+                return r;
+            }
+        }
         let point = Convex::point();
         let (shape, fixed) = match &self.other {
             Other::Shape(s) => (*s, None),
