@@ -44,6 +44,13 @@ impl<T: Float> PreparedMotion<T> {
     #[inline]
     #[must_use]
     pub fn probe(&self, n: Direction<T>) -> DirectedProbe<T> {
+        self.probe_inlined(n)
+    }
+
+    /// [`probe`](Self::probe), always inlined: for the mesh descent's hot
+    /// loop, where the compiler then keeps only what the bound reads.
+    #[inline(always)]
+    pub(crate) fn probe_inlined(&self, n: Direction<T>) -> DirectedProbe<T> {
         let m = self.motion();
         let orientation = m.orientation();
         let body = if orientation.is_identity() {
@@ -254,6 +261,13 @@ impl<T: Float> DirectedProbe<T> {
     /// ```
     #[must_use]
     pub fn ball_rate(&self, ball: &BoundingBall<T>, kind: BoundKind) -> T {
+        self.ball_rate_inlined(ball, kind)
+    }
+
+    /// [`ball_rate`](Self::ball_rate), always inlined (see
+    /// [`PreparedMotion::probe_inlined`]).
+    #[inline(always)]
+    pub(crate) fn ball_rate_inlined(&self, ball: &BoundingBall<T>, kind: BoundKind) -> T {
         let nevq = self.nevq_rate(lever_up(ball.outer_radius_up(), self.offset_up));
         if kind == BoundKind::Nevq || !self.usable {
             return nevq;

@@ -331,7 +331,7 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
             let root = NodeStep::Near(-T::INFINITY).resolved(limited);
             self.ws.enqueue(Pending::new(root, (0, 0), (0, 0)));
         }
-        while let Some(Queued { slot, .. }) = self.ws.pop() {
+        while let Some(slot) = self.ws.pop().map(Queued::slot) {
             let p = self.ws.pending[slot as usize];
             let Pending {
                 near,

@@ -442,7 +442,7 @@ impl<T: Float> MeshPair<'_, T> {
             let root = NodeStep::Near(-T::INFINITY).resolved(f.limited);
             self.ws.enqueue(Pending::new(root, (0, 0), roots));
         }
-        while let Some(Queued { slot, .. }) = self.ws.pop() {
+        while let Some(slot) = self.ws.pop().map(Queued::slot) {
             let p = self.ws.pending[slot as usize];
             let Pending {
                 near,

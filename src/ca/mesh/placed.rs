@@ -176,8 +176,12 @@ impl Rates {
     ) -> (T, T) {
         if self.one_sided {
             (
-                pa.motion.probe(n).ball_rate(balls.0, self.kind),
-                pb.motion.probe(-n).ball_rate(balls.1, self.kind),
+                pa.motion
+                    .probe_inlined(n)
+                    .ball_rate_inlined(balls.0, self.kind),
+                pb.motion
+                    .probe_inlined(-n)
+                    .ball_rate_inlined(balls.1, self.kind),
             )
         } else {
             (

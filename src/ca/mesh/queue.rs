@@ -126,11 +126,7 @@ impl<T: Float> MeshWorkspace<T> {
     #[inline]
     pub(super) fn enqueue(&mut self, pair: Pending) {
         let slot = self.pending.len() as u32;
-        let entry = Queued {
-            near: pair.near,
-            key: pair.key,
-            slot,
-        };
+        let entry = Queued::new(pair.near, pair.key.0, slot);
         self.pending.push(pair);
         match self.held {
             Some(held) if held > entry => self.heap.push(entry),
@@ -196,7 +192,7 @@ impl<T: Float> MeshWorkspace<T> {
         self.next.push(head.front_entry(t, horizon, cd));
         for q in self.held.take().into_iter().chain(self.heap.drain()) {
             self.next
-                .push(self.pending[q.slot as usize].front_entry(t, horizon, cd));
+                .push(self.pending[q.slot() as usize].front_entry(t, horizon, cd));
         }
     }
 }
@@ -213,12 +209,36 @@ const SEEN: usize = 512;
 /// An entry of the best-first queue: a node pair's key and where the pair is
 /// in the workspace's `pending` (kept small: the queue moves its entries). Pairs
 /// near enough for contact come first, least gap first; then the others,
-/// least step first.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(super) struct Queued {
-    near: bool,
-    key: OrdF64,
-    pub(super) slot: u32,
+/// least step first; among equal keys the one queued last.
+///
+/// The three are packed into one integer whose order is the queue's
+/// (`BinaryHeap` pops the greatest): bit 96 the nearness, bits 32 to 95
+/// the key's total order (`f64::total_cmp`) reversed, bits 0 to 31 the
+/// slot. A heap's comparison is then one integer comparison
+/// (`tests::the_packed_order_is_the_queues_rule`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub(super) struct Queued(u128);
+
+impl Queued {
+    /// The entry of a pair (`near`, `key`) at `slot` of `pending`.
+    #[inline]
+    pub(super) fn new(near: bool, key: f64, slot: u32) -> Self {
+        // `f64::total_cmp`'s order as an unsigned integer's: a negative
+        // float's bits reversed, a positive one's above every negative one.
+        let bits = key.to_bits();
+        let total = if bits >> 63 == 1 {
+            !bits
+        } else {
+            bits | (1 << 63)
+        };
+        Self((u128::from(near) << 96) | (u128::from(!total) << 32) | u128::from(slot))
+    }
+
+    /// Where the pair is in `pending`.
+    #[inline]
+    pub(super) const fn slot(self) -> u32 {
+        self.0 as u32
+    }
 }
 
 /// A node pair waiting in the best-first queue.
@@ -336,28 +356,6 @@ impl Pending {
     }
 }
 
-impl Eq for Queued {}
-
-impl PartialOrd for Queued {
-    fn partial_cmp(&self, other: &Self) -> Option<core::cmp::Ordering> {
-        Some(self.cmp(other))
-    }
-}
-
-impl Ord for Queued {
-    /// Reversed: `BinaryHeap` pops the greatest, which is the near pair with
-    /// the least gap, else the pair with the least step; among equal keys the
-    /// one queued last (depth first: below the resolution every pair within
-    /// the clearance has the step zero, and a dive finds a zero-step leaf
-    /// soonest).
-    fn cmp(&self, other: &Self) -> core::cmp::Ordering {
-        self.near
-            .cmp(&other.near)
-            .then_with(|| other.key.0.total_cmp(&self.key.0))
-            .then_with(|| self.slot.cmp(&other.slot))
-    }
-}
-
 /// An `f64` key (a step or gap converted exactly from `f32` or `f64`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct OrdF64(pub(super) f64);
@@ -392,7 +390,7 @@ mod tests {
                         NodeStep::Apart { step: f64::from(key), far: false, gap: 1.0, rate: 1.0 }
                     };
                     let pair = Pending::new(step, (k as u32, 0), (0, 0));
-                    plain.push(Queued { near: pair.near, key: pair.key, slot: ws.pending.len() as u32 });
+                    plain.push(Queued::new(pair.near, pair.key.0, ws.pending.len() as u32));
                     ws.enqueue(pair);
                 }
                 proptest::prop_assert_eq!(ws.len(), plain.len());
@@ -400,6 +398,55 @@ mod tests {
             let rest: Vec<_> = core::iter::from_fn(|| ws.pop()).collect();
             let plain_rest: Vec<_> = core::iter::from_fn(|| plain.pop()).collect();
             proptest::prop_assert_eq!(rest, plain_rest);
+        }
+    }
+
+    /// The packed entries compare as the queue's rule says, computed here
+    /// by hand: near before not near, then the least key by
+    /// `f64::total_cmp` (signed zeros, infinities and NaNs included), then
+    /// the greater slot (the pair queued last).
+    #[test]
+    fn the_packed_order_is_the_queues_rule() {
+        let keys = [
+            f64::NEG_INFINITY,
+            -1e300,
+            -1.0,
+            -f64::MIN_POSITIVE,
+            -5e-324,
+            -0.0,
+            0.0,
+            5e-324,
+            f64::MIN_POSITIVE,
+            0.5,
+            1.0,
+            1.0 + f64::EPSILON,
+            1e300,
+            f64::INFINITY,
+            f64::NAN,
+            -f64::NAN,
+        ];
+        let slots = [0, 1, 7, u32::MAX - 1, u32::MAX];
+        let mut entries = Vec::new();
+        for near in [false, true] {
+            for &key in &keys {
+                for &slot in &slots {
+                    entries.push((near, key, slot));
+                }
+            }
+        }
+        for &(na, ka, sa) in &entries {
+            for &(nb, kb, sb) in &entries {
+                let rule = na
+                    .cmp(&nb)
+                    .then_with(|| kb.total_cmp(&ka))
+                    .then_with(|| sa.cmp(&sb));
+                let packed = Queued::new(na, ka, sa).cmp(&Queued::new(nb, kb, sb));
+                assert_eq!(
+                    packed, rule,
+                    "({na}, {ka}, {sa}) against ({nb}, {kb}, {sb})"
+                );
+            }
+            assert_eq!(Queued::new(na, ka, sa).slot(), sa, "the slot back");
         }
     }
 
