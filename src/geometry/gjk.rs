@@ -377,79 +377,10 @@ where
 {
     let zero = T::ZERO;
     let u = T::UNIT_ROUNDOFF;
-    let e0 = Vec3::new(T::ONE, zero, zero);
-    let mut pa = [Vec3::ZERO; 4];
-    let mut pb = [Vec3::ZERO; 4];
-    let mut w = [Vec3::ZERO; 4];
-    pa[0] = a.support(e0).to_vec3();
-    pb[0] = b.support(-e0).to_vec3();
-    w[0] = pa[0] - pb[0];
-    let mut n = 1;
-    let mut lambda = [T::ONE, zero, zero, zero];
-    let mut v = w[0];
-    let mut vv = v.length_squared();
-    let mut iterations = 0;
-    let mut converged = false;
-    let mut intersecting = vv == zero;
-    let mut max_w2 = vv;
-    if intersecting {
-        converged = true;
-    }
-    while !intersecting && !vv.is_nan() && iterations < params.max_iterations {
-        iterations += 1;
-        let (sa, sb) = (a.support(-v).to_vec3(), b.support(v).to_vec3());
-        let wk = sa - sb;
-        if vv - v.dot(wk) <= params.rel_tol * vv || w[..n].contains(&wk) {
-            converged = true;
-            break;
-        }
-        let mut trial = w;
-        trial[n] = wk;
-        let r = nearest(&trial[..=n]);
-        if r.contains_origin {
-            pa[n] = sa;
-            pb[n] = sb;
-            n += 1;
-            lambda = r.lambda;
-            intersecting = true;
-            converged = true;
-            break;
-        }
-        let r_vv = r.v.length_squared();
-        if !(r_vv < vv) {
-            break; // no progress under rounding: keep the previous simplex
-        }
-        pa[n] = sa;
-        pb[n] = sb;
-        w[n] = wk;
-        max_w2 = max_w2.max_nan(wk.length_squared());
-        // Keep the support set, compacted.
-        let mut k = 0;
-        for i in 0..=n {
-            if r.mask & (1 << i) != 0 {
-                pa[k] = pa[i];
-                pb[k] = pb[i];
-                w[k] = w[i];
-                lambda[k] = r.lambda[i];
-                k += 1;
-            }
-        }
-        n = k;
-        v = r.v;
-        vv = r_vv;
-        // The origin within rounding of the simplex: touching or overlapping.
-        let tiny = T::from_u32(64) * u;
-        if vv <= tiny * tiny * max_w2 {
-            intersecting = true;
-            converged = true;
-        }
-    }
-    let mut on_a = Vec3::ZERO;
-    let mut on_b = Vec3::ZERO;
-    for i in 0..n {
-        on_a = on_a + pa[i] * lambda[i];
-        on_b = on_b + pb[i] * lambda[i];
-    }
+    let it = iterate(a, b, params, |_, _| false);
+    let (n, w, v, max_w2) = (it.n, it.w, it.v, it.max_w2);
+    let (on_a, on_b) = (it.on_a, it.on_b);
+    let (intersecting, converged, iterations) = (it.intersecting, it.converged, it.iterations);
     if intersecting {
         let m = Point3::from_vec3(on_a.lerp(on_b, T::HALF));
         return GjkResult {
@@ -508,6 +439,150 @@ where
         intersecting,
         converged,
         iterations,
+    }
+}
+
+/// Where GJK's iteration ended: the support simplex `w[..n]`, its nearest
+/// point `v` to the origin, the witnesses (the same convex combination of
+/// the support points of `A` and of `B`), and how it ended.
+struct Iterated<T> {
+    n: usize,
+    w: [Vec3<T>; 4],
+    v: Vec3<T>,
+    max_w2: T,
+    on_a: Vec3<T>,
+    on_b: Vec3<T>,
+    intersecting: bool,
+    converged: bool,
+    iterations: u32,
+}
+
+/// GJK's iteration (see [`gjk_distance`]), ended also as soon as
+/// `stop(v . v, v . w)` holds for the current `v` and the new support point
+/// `w` (then `converged` is set): `v . w / |v|` is the iteration's lower
+/// bound of the distance (the slab gap of `A - B` along `-v`, before
+/// rounding), `|v|` its estimate from above.
+fn iterate<T, A, B, F>(a: &A, b: &B, params: &GjkParams<T>, mut stop: F) -> Iterated<T>
+where
+    T: Float,
+    A: SupportMap<T> + ?Sized,
+    B: SupportMap<T> + ?Sized,
+    F: FnMut(T, T) -> bool,
+{
+    let zero = T::ZERO;
+    let u = T::UNIT_ROUNDOFF;
+    let e0 = Vec3::new(T::ONE, zero, zero);
+    let mut pa = [Vec3::ZERO; 4];
+    let mut pb = [Vec3::ZERO; 4];
+    let mut w = [Vec3::ZERO; 4];
+    pa[0] = a.support(e0).to_vec3();
+    pb[0] = b.support(-e0).to_vec3();
+    w[0] = pa[0] - pb[0];
+    let mut n = 1;
+    let mut lambda = [T::ONE, zero, zero, zero];
+    let mut v = w[0];
+    let mut vv = v.length_squared();
+    let mut iterations = 0;
+    let mut converged = false;
+    let mut intersecting = vv == zero;
+    let mut max_w2 = vv;
+    if intersecting {
+        converged = true;
+    }
+    while !intersecting && !vv.is_nan() && iterations < params.max_iterations {
+        iterations += 1;
+        let (sa, sb) = (a.support(-v).to_vec3(), b.support(v).to_vec3());
+        let wk = sa - sb;
+        let vw = v.dot(wk);
+        if vv - vw <= params.rel_tol * vv || w[..n].contains(&wk) || stop(vv, vw) {
+            converged = true;
+            break;
+        }
+        let mut trial = w;
+        trial[n] = wk;
+        let r = nearest(&trial[..=n]);
+        if r.contains_origin {
+            pa[n] = sa;
+            pb[n] = sb;
+            n += 1;
+            lambda = r.lambda;
+            intersecting = true;
+            converged = true;
+            break;
+        }
+        let r_vv = r.v.length_squared();
+        if !(r_vv < vv) {
+            break; // no progress under rounding: keep the previous simplex
+        }
+        pa[n] = sa;
+        pb[n] = sb;
+        w[n] = wk;
+        max_w2 = max_w2.max_nan(wk.length_squared());
+        // Keep the support set, compacted.
+        let mut k = 0;
+        for i in 0..=n {
+            if r.mask & (1 << i) != 0 {
+                pa[k] = pa[i];
+                pb[k] = pb[i];
+                w[k] = w[i];
+                lambda[k] = r.lambda[i];
+                k += 1;
+            }
+        }
+        n = k;
+        v = r.v;
+        vv = r_vv;
+        // The origin within rounding of the simplex: touching or overlapping.
+        let tiny = T::from_u32(64) * u;
+        if vv <= tiny * tiny * max_w2 {
+            intersecting = true;
+            converged = true;
+        }
+    }
+    let mut on_a = Vec3::ZERO;
+    let mut on_b = Vec3::ZERO;
+    for i in 0..n {
+        on_a = on_a + pa[i] * lambda[i];
+        on_b = on_b + pb[i] * lambda[i];
+    }
+    Iterated {
+        n,
+        w,
+        v,
+        max_w2,
+        on_a,
+        on_b,
+        intersecting,
+        converged,
+        iterations,
+    }
+}
+
+/// The closest points' estimates `(on_a, on_b)` of GJK's iteration ended
+/// by the caller's rule `stop(v . v, v . w)` as well as by `params` (see
+/// [`iterate`]), with no certification: for a caller that only chooses a
+/// direction from them and certifies its own gap along it
+/// (`proofs/12-shapes.md`, the lemma "The closest direction, to the
+/// stepper's need"). Equal points when the bodies intersect (as far as
+/// rounding tells).
+pub(crate) fn gjk_closest<T, A, B, F>(
+    a: &A,
+    b: &B,
+    params: &GjkParams<T>,
+    stop: F,
+) -> (Vec3<T>, Vec3<T>)
+where
+    T: Float,
+    A: SupportMap<T> + ?Sized,
+    B: SupportMap<T> + ?Sized,
+    F: FnMut(T, T) -> bool,
+{
+    let it = iterate(a, b, params, stop);
+    if it.intersecting {
+        let m = it.on_a.lerp(it.on_b, T::HALF);
+        (m, m)
+    } else {
+        (it.on_a, it.on_b)
     }
 }
 
