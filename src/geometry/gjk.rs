@@ -375,9 +375,34 @@ where
     A: SupportMap<T> + ?Sized,
     B: SupportMap<T> + ?Sized,
 {
+    gjk_distance_from(a, b, params, Vec3::new(T::ONE, T::ZERO, T::ZERO))
+}
+
+/// [`gjk_distance`] started from the supports along `towards` (`a`'s
+/// along it, `b`'s against it): a direction from `a` towards `b` (the line
+/// between their centres) starts near the answer and saves iterations. Any
+/// direction is sound (only the first simplex point depends on it, and
+/// every bound returned is certified along the final direction); a zero or
+/// non-finite one is taken as `x`.
+#[must_use]
+pub(crate) fn gjk_distance_from<T, A, B>(
+    a: &A,
+    b: &B,
+    params: &GjkParams<T>,
+    towards: Vec3<T>,
+) -> GjkResult<T>
+where
+    T: Float,
+    A: SupportMap<T> + ?Sized,
+    B: SupportMap<T> + ?Sized,
+{
     let zero = T::ZERO;
     let u = T::UNIT_ROUNDOFF;
-    let e0 = Vec3::new(T::ONE, zero, zero);
+    let e0 = if towards.is_finite() && towards.length_squared() > zero {
+        towards
+    } else {
+        Vec3::new(T::ONE, zero, zero)
+    };
     let mut pa = [Vec3::ZERO; 4];
     let mut pb = [Vec3::ZERO; 4];
     let mut w = [Vec3::ZERO; 4];
