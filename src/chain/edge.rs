@@ -19,14 +19,14 @@
 
 use alloc::vec::Vec;
 
-use crate::bvh::{Hierarchy, NO_CHILD};
+use crate::bvh::{Hierarchy, Node, NO_CHILD};
 use crate::chain::bound::LinkMotion;
 use crate::chain::gap::{axes_gap, box_support_up, from_box, placed_corners, slab_gap};
 use crate::chain::report::ChainPair;
 use crate::chain::segment::{take_motion, Segment, Work};
 use crate::chain::shapes::{node_points, triangle_points_gap, Against, Geometry, ShapeObstacle};
 use crate::geometry::closest::{point_triangle_vec, triangle_triangle_vec};
-use crate::geometry::gjk::{gjk_distance, ConvexPolytope, GjkParams};
+use crate::geometry::gjk::{gjk_distance_from, ConvexPolytope, GjkParams};
 use crate::rounding::{add_up, diff_up, gamma, gap_down, mul_up, sum_up};
 use crate::{Float, Vec3};
 
@@ -170,6 +170,9 @@ pub(super) struct Edge<'a, T: 'static> {
     /// Each link's convex hull (`None` without geometry): a link pair's
     /// first cover (Lemma 13.7).
     pub(super) hulls: &'a [Option<ConvexPolytope<'a, T>>],
+    /// Each mesh obstacle's convex hull placed by its pose (`None` when GJK
+    /// refuses a vertex): its first cover against a link's (Lemma 13.8).
+    pub(super) obstacle_hulls: &'a [Option<ConvexPolytope<'a, T>>],
     /// Contact distance plus padding: what a leaf's computed distance is
     /// declared touching at.
     pub(super) touch: T,
@@ -619,6 +622,40 @@ impl<T: Float> Edge<'_, T> {
                 let o = &self.segment.obstacles[ob as usize];
                 let tb = &o.tree.whole;
                 let mb = &still[ob as usize];
+                if it.node == 0 && k == 0 {
+                    let nb = &tb.nodes[0];
+                    let cb = mb.pose.transform_point(*nb.ball.centre());
+                    let rb = nb.ball.radius();
+                    // The roots' balls and boxes before the hulls: a box
+                    // clears a long or flat obstacle (a pole, a plate)
+                    // that its ball does not, for a few slabs (Lemma 13.6).
+                    let need = add_up(sa, self.padding);
+                    let balls = gap_down(
+                        (cb - ca).length() - ra - rb,
+                        ma.delta,
+                        mb.delta,
+                        ma.reach + mb.reach,
+                    );
+                    if balls > need
+                        || box_gap((na, ma, ca, ra), (nb, mb, cb, rb), balls, need) > need
+                    {
+                        return Verdict::Clear;
+                    }
+                    let hulls = || {
+                        let ha = self
+                            .hulls
+                            .get(it.link as usize)?
+                            .as_ref()?
+                            .with_pose(ma.pose)
+                            .ok()?;
+                        Some((ha, *self.obstacle_hulls.get(ob as usize)?.as_ref()?))
+                    };
+                    if let Some(v) =
+                        self.hull_verdict(hulls, (ma, sa), (mb, T::ZERO), (ca, ra), (cb, rb))
+                    {
+                        return v;
+                    }
+                }
                 self.node_pair(stats, (ta, it.node, ma, sa), (tb, k, mb, T::ZERO), (ca, ra))
             }
             Target::Link(b, k) => {
@@ -633,9 +670,14 @@ impl<T: Float> Edge<'_, T> {
                 }
                 let sb = sweeps[1];
                 if it.node == 0 && k == 0 {
+                    let hulls = || {
+                        let place = |l: u32, pose| {
+                            self.hulls.get(l as usize)?.as_ref()?.with_pose(pose).ok()
+                        };
+                        Some((place(it.link, ma.pose)?, place(b, mb.pose)?))
+                    };
                     if let Some(v) = self.hull_verdict(
-                        it.link,
-                        b,
+                        hulls,
                         (ma, sa),
                         (mb, sb),
                         (ca, ra),
@@ -649,17 +691,17 @@ impl<T: Float> Edge<'_, T> {
         }
     }
 
-    /// A pair of links at their roots, by their convex hulls (Lemma 13.7):
-    /// clear when the hulls' certified gap exceeds both sweeps and the
-    /// padding; kept whole for the interval's halves while that gap is
-    /// above the padding and at least a quarter of what clearing needs (two
-    /// halvings would then clear it, were the gap to stay); `None` (descend
-    /// the trees as before) otherwise: the hulls meet at the middle, or are
-    /// much nearer than the meshes (a link far from convex).
-    fn hull_verdict(
+    /// A pair of links at their roots, or a link and a mesh obstacle at
+    /// theirs, by their convex hulls (Lemmas 13.7 and 13.8; `hulls` places
+    /// them, called only when the root balls do not clear the pair): clear
+    /// when the hulls' certified gap exceeds both sweeps and the padding;
+    /// kept whole for the interval's halves while that gap is above the
+    /// padding; `None` (descend the trees as before) otherwise: the hulls
+    /// meet at the middle, or are much nearer than the meshes (a mesh far
+    /// from convex).
+    fn hull_verdict<'h>(
         &self,
-        a: u32,
-        b: u32,
+        hulls: impl FnOnce() -> Option<(ConvexPolytope<'h, T>, ConvexPolytope<'h, T>)>,
         (ma, sa): (&LinkMotion<T>, T),
         (mb, sb): (&LinkMotion<T>, T),
         (ca, ra): (Vec3<T>, T),
@@ -676,25 +718,16 @@ impl<T: Float> Edge<'_, T> {
         if balls > need {
             return Some(Verdict::Clear);
         }
-        let ha = self
-            .hulls
-            .get(a as usize)?
-            .as_ref()?
-            .with_pose(ma.pose)
-            .ok()?;
-        let hb = self
-            .hulls
-            .get(b as usize)?
-            .as_ref()?
-            .with_pose(mb.pose)
-            .ok()?;
+        let (ha, hb) = hulls()?;
         let params = GjkParams::default()
             .with_rel_tol(T::ONE / T::from_u32(8))
             .with_max_iterations(24);
-        let r = gjk_distance(&ha, &hb, &params);
+        // Started along the centre line: near the answer (any start is sound).
+        let r = gjk_distance_from(&ha, &hb, &params, cb - ca);
         r.direction?;
         // The hulls placed exactly by the computed poses are within each
-        // link's `delta` of the exact hulls (Lemma 13.7).
+        // side's `delta` of the exact hulls (Lemma 13.7; an obstacle's pose
+        // is exact, its `delta` subtracted all the same: Lemma 13.8).
         let gap = gap_down(r.lower_bound, ma.delta, mb.delta, ma.reach + mb.reach);
         if gap > need {
             Some(Verdict::Clear)
@@ -731,62 +764,11 @@ impl<T: Float> Edge<'_, T> {
         if gap > need {
             return Verdict::Clear;
         }
-        // The boxes' slab gaps: along the centre line, then along the
-        // thinnest axis of the larger box (a plate's normal): much tighter
-        // than the balls for flat or long nodes.
-        let line = cb - ca;
-        // The gap along `d` taken from `a` towards `b` (any computed
-        // direction is sound: Lemma 13.6 certifies the supports along it).
-        let along = |d: Vec3<T>| match d.try_normalize() {
-            Some(n) => {
-                let hi_a = box_support_up(&na.obb, ma, n);
-                let lo_b = -box_support_up(&nb.obb, mb, -n);
-                gap_down(lo_b - hi_a, ma.delta, mb.delta, ma.reach + mb.reach)
-            }
-            None => -T::INFINITY,
-        };
-        let box_gap = |d: Vec3<T>| along(if d.dot(line) < T::ZERO { -d } else { d });
-        let (big, small_c, big_m, big_is_b) = if rb > ra {
-            (&nb.obb, ca, mb, true)
-        } else {
-            (&na.obb, cb, ma, false)
-        };
-        // From the larger box's point nearest the smaller ball's centre to
-        // that centre: the nearest face of a long or wide node (the side of
-        // a pole one long triangle spans), where the centre line is tilted.
-        let nearest = || {
-            let d = from_box(big, big_m, small_c);
-            along(if big_is_b { -d } else { d })
-        };
-        // The thinnest axis of the larger box (a plate's normal).
-        let thin = || box_gap(big_m.pose.transform_vector(Vec3::from_array(big.axes[2])));
-        // For nodes of like size the centre line first; for a much larger
-        // one its nearest face first.
-        let lopsided = rb > ra * T::from_u32(4) || ra > rb * T::from_u32(4);
-        let mut gap = gap;
-        if lopsided {
-            gap = gap.max_nan(nearest());
-            if gap > need {
-                return Verdict::Clear;
-            }
-            gap = gap.max_nan(thin());
-            if gap > need {
-                return Verdict::Clear;
-            }
-        } else {
-            gap = gap.max_nan(box_gap(line));
-            if gap > need {
-                return Verdict::Clear;
-            }
-            gap = gap.max_nan(thin());
-            if gap > need {
-                return Verdict::Clear;
-            }
-            gap = gap.max_nan(nearest());
-            if gap > need {
-                return Verdict::Clear;
-            }
+        let gap = box_gap((na, ma, ca, ra), (nb, mb, cb, rb), gap, need);
+        if gap > need {
+            return Verdict::Clear;
         }
+        let lopsided = rb > ra * T::from_u32(4) || ra > rb * T::from_u32(4);
         match (na.leaf(), nb.leaf()) {
             (Some(la), Some(lb)) => {
                 stats.leaf_tests += 1;
@@ -879,4 +861,75 @@ fn split<T: Float>(inner_a: bool, ra: T, inner_b: bool, rb: T, sweep: T) -> Verd
         (_, true) => Verdict::SplitTarget,
         _ => Verdict::Keep,
     }
+}
+
+/// The two nodes' oriented boxes' slab gaps (Lemma 13.6, item 2), taken
+/// until one exceeds `need`: along the centre line, the thinnest axis of
+/// the larger box (a plate's normal) and the direction from the larger
+/// box's point nearest the smaller ball's centre; the largest of them and
+/// `gap` (a certified gap already known, the balls').
+#[allow(clippy::type_complexity)]
+fn box_gap<T: Float>(
+    (na, ma, ca, ra): (&Node<T>, &LinkMotion<T>, Vec3<T>, T),
+    (nb, mb, cb, rb): (&Node<T>, &LinkMotion<T>, Vec3<T>, T),
+    gap: T,
+    need: T,
+) -> T {
+    // The boxes' slab gaps: along the centre line, then along the
+    // thinnest axis of the larger box (a plate's normal): much tighter
+    // than the balls for flat or long nodes.
+    let line = cb - ca;
+    // The gap along `d` taken from `a` towards `b` (any computed
+    // direction is sound: Lemma 13.6 certifies the supports along it).
+    let along = |d: Vec3<T>| match d.try_normalize() {
+        Some(n) => {
+            let hi_a = box_support_up(&na.obb, ma, n);
+            let lo_b = -box_support_up(&nb.obb, mb, -n);
+            gap_down(lo_b - hi_a, ma.delta, mb.delta, ma.reach + mb.reach)
+        }
+        None => -T::INFINITY,
+    };
+    let box_gap = |d: Vec3<T>| along(if d.dot(line) < T::ZERO { -d } else { d });
+    let (big, small_c, big_m, big_is_b) = if rb > ra {
+        (&nb.obb, ca, mb, true)
+    } else {
+        (&na.obb, cb, ma, false)
+    };
+    // From the larger box's point nearest the smaller ball's centre to
+    // that centre: the nearest face of a long or wide node (the side of
+    // a pole one long triangle spans), where the centre line is tilted.
+    let nearest = || {
+        let d = from_box(big, big_m, small_c);
+        along(if big_is_b { -d } else { d })
+    };
+    // The thinnest axis of the larger box (a plate's normal).
+    let thin = || box_gap(big_m.pose.transform_vector(Vec3::from_array(big.axes[2])));
+    // For nodes of like size the centre line first; for a much larger
+    // one its nearest face first.
+    let lopsided = rb > ra * T::from_u32(4) || ra > rb * T::from_u32(4);
+    let mut gap = gap;
+    if lopsided {
+        gap = gap.max_nan(nearest());
+        if gap > need {
+            return gap;
+        }
+        gap = gap.max_nan(thin());
+        if gap > need {
+            return gap;
+        }
+    } else {
+        gap = gap.max_nan(box_gap(line));
+        if gap > need {
+            return gap;
+        }
+        gap = gap.max_nan(thin());
+        if gap > need {
+            return gap;
+        }
+        gap = gap.max_nan(nearest());
+        if gap > need {
+            return gap;
+        }
+    }
+    gap
 }

@@ -404,7 +404,7 @@ pub(crate) struct LinkData<T> {
 
 /// The distinct points of `vertices` (exact duplicates removed: a mesh
 /// stored as a triangle soup repeats each corner), in some order.
-fn distinct<T: Float>(vertices: &[[T; 3]]) -> Vec<[T; 3]> {
+pub(super) fn distinct<T: Float>(vertices: &[[T; 3]]) -> Vec<[T; 3]> {
     let mut out = vertices.to_vec();
     let key = |v: &[T; 3]| v.map(T::to_f64);
     out.sort_unstable_by(|a, b| {

@@ -3,7 +3,11 @@
 
 use alloc::string::String;
 
-use crate::chain::model::ChainError;
+use alloc::vec::Vec;
+
+use crate::chain::model::{distinct, ChainError};
+use crate::geometry::gjk::ConvexPolytope;
+use crate::geometry::hull_vertices::hull_vertex_indices;
 use crate::rounding::gamma;
 use crate::{BallTree, Float, Pose, TriMesh};
 
@@ -19,6 +23,13 @@ pub struct Obstacle<T> {
     pub(super) reach: T,
     /// The placement's rounding (`gamma_4` of `reach`).
     pub(super) delta: T,
+    /// The mesh's distinct vertices reduced to a superset of its convex
+    /// hull's vertices, in its own frame: its first cover against a link's
+    /// hull (`proofs/13-chains.md`, Lemma 13.8).
+    pub(super) hull: Vec<[T; 3]>,
+    /// The hull's bound of its vertices' 1-norms (`None`: a vertex GJK
+    /// refuses; the query then descends the tree alone).
+    pub(super) hull_rho: Option<T>,
 }
 
 impl<T: Float> Obstacle<T> {
@@ -45,6 +56,15 @@ impl<T: Float> Obstacle<T> {
             .map_err(|e| ChainError::Mesh(alloc::format!("obstacle {name:?}: {e}")))?;
         let reach = (pose.translation.length() + tree.whole.reach) * (T::ONE + gamma::<T>(4));
         let delta = gamma::<T>(8) * reach + T::from_u32(4) * T::ETA_NORMAL;
+        // The same hull with fewer supports (Lemma 13.7, item 5).
+        let all = distinct(mesh.vertices());
+        let hull: Vec<[T; 3]> = hull_vertex_indices(&all)
+            .into_iter()
+            .map(|i| all[i])
+            .collect();
+        let hull_rho = ConvexPolytope::try_new(&hull, Pose::IDENTITY)
+            .ok()
+            .map(|p| p.radius_l1());
         Ok(Self {
             name,
             mesh,
@@ -52,6 +72,8 @@ impl<T: Float> Obstacle<T> {
             pose,
             reach: reach + delta,
             delta,
+            hull,
+            hull_rho,
         })
     }
 

@@ -373,11 +373,21 @@ impl<T: Float> ChainScene<T> {
                     .and_then(|rho| ConvexPolytope::with_radius(&l.hull, rho, Pose::IDENTITY).ok())
             })
             .collect();
+        // Each mesh obstacle's hull, placed by its pose once (Lemma 13.8).
+        let obstacle_hulls = self
+            .obstacles
+            .iter()
+            .map(|o| {
+                o.hull_rho
+                    .and_then(|rho| ConvexPolytope::with_radius(&o.hull, rho, o.pose).ok())
+            })
+            .collect();
         EdgeChecker {
             scene: self,
             initial,
             slots,
             hulls,
+            obstacle_hulls,
             work: EdgeWork::default(),
         }
     }
@@ -628,6 +638,8 @@ pub struct EdgeChecker<'s, T: 'static> {
     slots: Vec<(usize, usize)>,
     /// Each link's convex hull (Lemma 13.7).
     hulls: Vec<Option<ConvexPolytope<'s, T>>>,
+    /// Each mesh obstacle's convex hull, placed (Lemma 13.8).
+    obstacle_hulls: Vec<Option<ConvexPolytope<'s, T>>>,
     work: EdgeWork<T>,
 }
 
@@ -654,6 +666,7 @@ impl<T: Float> EdgeChecker<'_, T> {
             segment: scene.segment_view(q0, q1),
             shapes: &scene.shapes,
             hulls: &self.hulls,
+            obstacle_hulls: &self.obstacle_hulls,
             touch: scene.params.contact_distance + scene.params.padding,
             padding: scene.params.padding,
             budget: scene.params.edge_budget,
@@ -674,6 +687,7 @@ impl<T: Float> EdgeChecker<'_, T> {
             segment: scene.segment_view(q, q),
             shapes: &scene.shapes,
             hulls: &self.hulls,
+            obstacle_hulls: &self.obstacle_hulls,
             touch: scene.params.padding,
             padding: scene.params.padding,
             budget: usize::MAX,

@@ -375,9 +375,30 @@ where
     A: SupportMap<T> + ?Sized,
     B: SupportMap<T> + ?Sized,
 {
+    gjk_distance_from(a, b, params, Vec3::new(T::ONE, T::ZERO, T::ZERO))
+}
+
+/// [`gjk_distance`] started from the supports along `towards` (`a`'s
+/// along it, `b`'s against it): a direction from `a` towards `b` (the line
+/// between their centres) starts near the answer and saves iterations. Any
+/// direction is sound (only the first simplex point depends on it, and
+/// every bound returned is certified along the final direction); a zero or
+/// non-finite one is taken as `x`.
+#[must_use]
+pub(crate) fn gjk_distance_from<T, A, B>(
+    a: &A,
+    b: &B,
+    params: &GjkParams<T>,
+    towards: Vec3<T>,
+) -> GjkResult<T>
+where
+    T: Float,
+    A: SupportMap<T> + ?Sized,
+    B: SupportMap<T> + ?Sized,
+{
     let zero = T::ZERO;
     let u = T::UNIT_ROUNDOFF;
-    let it = iterate(a, b, params, |_, _| false);
+    let it = iterate(a, b, params, towards, |_, _| false);
     let (n, w, v, max_w2) = (it.n, it.w, it.v, it.max_w2);
     let (on_a, on_b) = (it.on_a, it.on_b);
     let (intersecting, converged, iterations) = (it.intersecting, it.converged, it.iterations);
@@ -457,12 +478,19 @@ struct Iterated<T> {
     iterations: u32,
 }
 
-/// GJK's iteration (see [`gjk_distance`]), ended also as soon as
+/// GJK's iteration (see [`gjk_distance`]; started along `towards` as
+/// [`gjk_distance_from`] is), ended also as soon as
 /// `stop(v . v, v . w)` holds for the current `v` and the new support point
 /// `w` (then `converged` is set): `v . w / |v|` is the iteration's lower
 /// bound of the distance (the slab gap of `A - B` along `-v`, before
 /// rounding), `|v|` its estimate from above.
-fn iterate<T, A, B, F>(a: &A, b: &B, params: &GjkParams<T>, mut stop: F) -> Iterated<T>
+fn iterate<T, A, B, F>(
+    a: &A,
+    b: &B,
+    params: &GjkParams<T>,
+    towards: Vec3<T>,
+    mut stop: F,
+) -> Iterated<T>
 where
     T: Float,
     A: SupportMap<T> + ?Sized,
@@ -471,7 +499,11 @@ where
 {
     let zero = T::ZERO;
     let u = T::UNIT_ROUNDOFF;
-    let e0 = Vec3::new(T::ONE, zero, zero);
+    let e0 = if towards.is_finite() && towards.length_squared() > zero {
+        towards
+    } else {
+        Vec3::new(T::ONE, zero, zero)
+    };
     let mut pa = [Vec3::ZERO; 4];
     let mut pb = [Vec3::ZERO; 4];
     let mut w = [Vec3::ZERO; 4];
@@ -577,7 +609,7 @@ where
     B: SupportMap<T> + ?Sized,
     F: FnMut(T, T) -> bool,
 {
-    let it = iterate(a, b, params, stop);
+    let it = iterate(a, b, params, Vec3::new(T::ONE, T::ZERO, T::ZERO), stop);
     if it.intersecting {
         let m = it.on_a.lerp(it.on_b, T::HALF);
         (m, m)
