@@ -175,20 +175,31 @@ impl<'a, T: Float> MeshConvexPair<'a, T> {
         let Other::Shape(shape) = self.other else {
             return None;
         };
+        let gap_along = |n: Direction<T>| {
+            let (pa, pb) = (a.motion().pose_at(t), b.motion().pose_at(t));
+            let (ea, _) = placement_error(a.motion(), t, hull.reach());
+            let (eb, _) = placement_error(b.motion(), t, shape.reach());
+            certified_gap((&hull, &pa, ea), (&shape, &pb, eb), n.get())
+        };
         match ConvexPair::new(hull, shape).step(t, a, b, params) {
+            // Where the certified gap along the hull's direction is under
+            // half the distance found (in `f32` a curved core's closest
+            // direction is off by the closest points' rounding over their
+            // distance, which loses the gap along a wide face), the tree
+            // decides: its leaves try the triangles' normals too. Either
+            // step is certified; this only keeps the longer one's progress.
+            r @ StepResult::Advance {
+                witness: Some(w),
+                normal: Some(n),
+                ..
+            } => (gap_along(n) * T::TWO >= w.distance).then_some(r),
             r @ StepResult::Advance { .. } => Some(r),
+            // The hull's contact is the triangles' where the mesh is solid
+            // (the hull is the body) or the shape is certified not to
+            // overlap the hull's inside (a plane between them).
             r @ StepResult::Touching {
                 normal: Some(n), ..
-            } => {
-                if self.solid {
-                    return Some(r);
-                }
-                let (pa, pb) = (a.motion().pose_at(t), b.motion().pose_at(t));
-                let (ea, _) = placement_error(a.motion(), t, hull.reach());
-                let (eb, _) = placement_error(b.motion(), t, shape.reach());
-                let gap = certified_gap((&hull, &pa, ea), (&shape, &pb, eb), n.get());
-                (gap >= T::ZERO).then_some(r)
-            }
+            } => (self.solid || gap_along(n) >= T::ZERO).then_some(r),
             _ => None,
         }
     }
