@@ -197,9 +197,14 @@ impl<'a, T: Float> MeshConvexPair<'a, T> {
             // The hull's contact is the triangles' where the mesh is solid
             // (the hull is the body) or the shape is certified not to
             // overlap the hull's inside (a plane between them).
+            // Overlapping a solid mesh (a distance of zero) is the start
+            // check's to report (Lemma 9.7), with its coincident witness.
             r @ StepResult::Touching {
-                normal: Some(n), ..
-            } => (self.solid || gap_along(n) >= T::ZERO).then_some(r),
+                normal: Some(n),
+                witness,
+            } => {
+                ((self.solid && witness.distance > T::ZERO) || gap_along(n) >= T::ZERO).then_some(r)
+            }
             _ => None,
         }
     }
