@@ -57,4 +57,16 @@ impl SplitMix64 {
     pub fn vec3(&mut self) -> [f64; 3] {
         [self.signed_unit(), self.signed_unit(), self.signed_unit()]
     }
+
+    /// A uniformly distributed unit vector (rejection from the cube).
+    pub fn direction(&mut self) -> [f64; 3] {
+        loop {
+            let v = self.vec3();
+            let l2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+            if l2 > 1e-6 && l2 <= 1.0 {
+                let l = l2.sqrt();
+                return v.map(|x| x / l);
+            }
+        }
+    }
 }

@@ -12,20 +12,6 @@ use crate::{Float, RigidMotion, TriMesh, Vec3};
 /// testkit's [`SplitMix64`], with the draws they need.
 pub type Rng = SplitMix64;
 
-impl SplitMix64 {
-    /// A uniformly distributed unit vector (rejection from the cube).
-    pub fn direction(&mut self) -> [f64; 3] {
-        loop {
-            let v = self.vec3();
-            let l2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
-            if l2 > 1e-6 && l2 <= 1.0 {
-                let l = l2.sqrt();
-                return v.map(|x| x / l);
-            }
-        }
-    }
-}
-
 /// A uniformly random rotation matrix (row-major), from a random unit
 /// quaternion (Shoemake's method).
 pub fn random_rotation(rng: &mut Rng) -> [[f64; 3]; 3] {
