@@ -19,7 +19,7 @@
 #[path = "common/shape_truth.rs"]
 mod shape_truth;
 
-use motion_bound::bodies::torus;
+use motion_bound::bodies::{cuboid, icosphere, torus};
 use motion_bound::ca::{
     time_of_impact, AnyPair, CaOutcome, CaParams, ContactCriterion, MeshConvexPair, Shape,
 };
@@ -32,72 +32,21 @@ const SAMPLES: usize = 200;
 /// The queries' contact distance.
 const CD: f64 = 1e-3;
 
-/// A box of half-extents `half` about `centre`, outward-wound.
+/// A box of half-extents `half` about `centre` (`bodies::cuboid`, moved).
 fn cuboid_mesh(half: [f64; 3], centre: [f64; 3]) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
-    let v = (0..8)
-        .map(|k| [0, 1, 2].map(|i| centre[i] + if k >> i & 1 == 1 { half[i] } else { -half[i] }))
+    let b = cuboid::<f64>(half.map(|h| 2.0 * h)).expect("a box");
+    let v = b
+        .vertices()
+        .iter()
+        .map(|p| [0, 1, 2].map(|i| p[i] + centre[i]))
         .collect();
-    let t = vec![
-        [0, 2, 1],
-        [1, 2, 3],
-        [4, 5, 6],
-        [5, 7, 6],
-        [0, 1, 4],
-        [1, 5, 4],
-        [2, 6, 3],
-        [3, 6, 7],
-        [0, 4, 2],
-        [2, 4, 6],
-        [1, 3, 5],
-        [3, 7, 5],
-    ];
-    (v, t)
+    (v, b.triangles().to_vec())
 }
 
-/// An icosahedron of circumradius `r`, outward-wound.
+/// An icosahedron of circumradius `r` (`bodies::icosphere` undivided).
 fn icosahedron(r: f64) -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {
-    let p = (1.0 + 5f64.sqrt()) / 2.0;
-    let s = r / (1.0 + p * p).sqrt();
-    let v = vec![
-        [-1.0, p, 0.0],
-        [1.0, p, 0.0],
-        [-1.0, -p, 0.0],
-        [1.0, -p, 0.0],
-        [0.0, -1.0, p],
-        [0.0, 1.0, p],
-        [0.0, -1.0, -p],
-        [0.0, 1.0, -p],
-        [p, 0.0, -1.0],
-        [p, 0.0, 1.0],
-        [-p, 0.0, -1.0],
-        [-p, 0.0, 1.0],
-    ]
-    .into_iter()
-    .map(|q: [f64; 3]| q.map(|x| x * s))
-    .collect();
-    let t = vec![
-        [0, 11, 5],
-        [0, 5, 1],
-        [0, 1, 7],
-        [0, 7, 10],
-        [0, 10, 11],
-        [1, 5, 9],
-        [5, 11, 4],
-        [11, 10, 2],
-        [10, 7, 6],
-        [7, 1, 8],
-        [3, 9, 4],
-        [3, 4, 2],
-        [3, 2, 6],
-        [3, 6, 8],
-        [3, 8, 9],
-        [4, 9, 5],
-        [2, 4, 11],
-        [6, 2, 10],
-        [8, 6, 7],
-        [9, 8, 1],
-    ];
-    (v, t)
+    let b = icosphere::<f64>(r, 0).expect("an icosahedron");
+    (b.vertices().to_vec(), b.triangles().to_vec())
 }
 
 fn mesh((v, t): (Vec<[f64; 3]>, Vec<[u32; 3]>)) -> TriMesh<f64> {

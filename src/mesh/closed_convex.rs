@@ -79,21 +79,7 @@ mod tests {
         let v = (0..8)
             .map(|k| [0, 1, 2].map(|i| if k >> i & 1 == 1 { 1.0 } else { -1.0 }))
             .collect();
-        // Outward-wound faces (counter-clockwise seen from outside).
-        let t = vec![
-            [0, 2, 1],
-            [1, 2, 3],
-            [4, 5, 6],
-            [5, 7, 6],
-            [0, 1, 4],
-            [1, 5, 4],
-            [2, 6, 3],
-            [3, 6, 7],
-            [0, 4, 2],
-            [2, 4, 6],
-            [1, 3, 5],
-            [3, 7, 5],
-        ];
+        let t = crate::mesh::BOX_TRIANGLES.to_vec();
         (v, t)
     }
 

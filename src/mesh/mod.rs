@@ -14,6 +14,25 @@ mod topology;
 mod trimesh;
 
 pub(crate) use closed_convex::closed_convex_vertices;
+
+/// A box's 12 triangles over its corners numbered so that corner `i` has
+/// coordinate `k` at `+h[k]` when bit `k` of `i` is set (else `-h[k]`), two
+/// a face, counter-clockwise seen from outside: the box of a URDF `<box>`
+/// and of the crate's own tests.
+pub(crate) const BOX_TRIANGLES: [[u32; 3]; 12] = [
+    [0, 2, 1],
+    [1, 2, 3],
+    [4, 5, 6],
+    [5, 7, 6],
+    [0, 1, 4],
+    [1, 5, 4],
+    [2, 6, 3],
+    [3, 6, 7],
+    [0, 4, 2],
+    [2, 4, 6],
+    [1, 3, 5],
+    [3, 7, 5],
+];
 #[cfg(feature = "obj")]
 pub use error::ObjError;
 pub use error::{MeshError, OffError, OffErrorKind};
