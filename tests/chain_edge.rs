@@ -1244,20 +1244,9 @@ fn hooked_chain(rng: &mut Rng, joints: usize) -> Chain<f64> {
 /// `at` within the contact distance of the truth's surfaces.
 #[test]
 fn hooked_link_pairs_by_their_hulls_are_never_free_or_late() {
-    let mut rng = Rng::new(713);
-    let mut total = Tally::default();
-    for k in 0..6u64 {
-        let scene = ChainScene::new(hooked_chain(&mut rng, 3 + (k as usize) % 3));
-        let truth = Truth::new(&scene);
-        let t = check_edges(&scene, &truth, 2 * cases(), 7000 + k, true, false);
-        total.add(&t);
-    }
-    eprintln!("hooked chains, link pairs: {total:?}");
-    assert_eq!(total.unsound(), (0, 0, 0, 0), "{total:?}");
-    assert!(
-        total.colliding > 0 && total.free > 0,
-        "the edges both hit and miss: {total:?}"
-    );
+    edges_by_hulls_are_never_free_or_late(713, 7000, "hooked chains, link pairs", |rng, joints| {
+        ChainScene::new(hooked_chain(rng, joints))
+    });
 }
 
 /// Lemma 13.7 at one time, against this file's exact distances (brute
@@ -1271,42 +1260,9 @@ fn hooked_link_pairs_by_their_hulls_are_never_free_or_late() {
 /// near-convex pairs).
 #[test]
 fn hooked_link_pairs_touch_at_a_padding_just_above_their_exact_distance() {
-    let mut rng = Rng::new(714);
-    let (mut checked, mut apart) = (0, 0);
-    for k in 0..6usize {
-        let mut scene = ChainScene::new(hooked_chain(&mut rng, 3 + k % 3));
-        let exact = Exact::new(&scene);
-        let limits = limits_of(scene.chain());
-        for _ in 0..4 * cases() {
-            let q: Vec<f64> = limits.iter().map(|&[lo, hi]| rng.range(lo, hi)).collect();
-            let d = exact
-                .truth
-                .pairs
-                .iter()
-                .map(|&p| exact.pair_distance(p, &q))
-                .fold(f64::INFINITY, f64::min);
-            if !d.is_finite() || d <= 1e-6 {
-                continue;
-            }
-            checked += 1;
-            let above = ChainParams::default().with_padding(d * (1.0 + 1e-6) + 1e-12);
-            scene.set_params(above).expect("params");
-            assert!(
-                scene.collides_at(&q).expect("valid q"),
-                "certified apart beyond the exact distance {d} at {q:?}"
-            );
-            scene
-                .set_params(ChainParams::default().with_padding(0.9 * d))
-                .expect("params");
-            apart += usize::from(!scene.collides_at(&q).expect("valid q"));
-        }
-    }
-    eprintln!("hooked chains at one time: {apart} of {checked} apart at 90 % of the distance");
-    assert!(checked > 0, "some configurations are free");
-    assert!(
-        apart * 2 >= checked,
-        "most are found apart: {apart} of {checked}"
-    );
+    touch_at_a_padding_just_above_the_exact_distance(714, "hooked chains", |rng, joints| {
+        ChainScene::new(hooked_chain(rng, joints))
+    });
 }
 
 /// A chain of hooks among mesh obstacles for Lemma 13.8: three hooks (far
@@ -1352,19 +1308,11 @@ fn hooks_among_hooks(rng: &mut Rng, joints: usize) -> ChainScene<f64> {
 /// truth's surfaces.
 #[test]
 fn links_against_mesh_obstacles_by_their_hulls_are_never_free_or_late() {
-    let mut rng = Rng::new(815);
-    let mut total = Tally::default();
-    for k in 0..6u64 {
-        let scene = hooks_among_hooks(&mut rng, 3 + (k as usize) % 3);
-        let truth = Truth::new(&scene);
-        let t = check_edges(&scene, &truth, 2 * cases(), 8100 + k, true, false);
-        total.add(&t);
-    }
-    eprintln!("hooked chains among mesh obstacles: {total:?}");
-    assert_eq!(total.unsound(), (0, 0, 0, 0), "{total:?}");
-    assert!(
-        total.colliding > 0 && total.free > 0,
-        "the edges both hit and miss: {total:?}"
+    edges_by_hulls_are_never_free_or_late(
+        815,
+        8100,
+        "hooked chains among mesh obstacles",
+        hooks_among_hooks,
     );
 }
 
@@ -1377,10 +1325,50 @@ fn links_against_mesh_obstacles_by_their_hulls_are_never_free_or_late() {
 /// configurations (tightness).
 #[test]
 fn links_and_mesh_obstacles_touch_at_a_padding_just_above_their_exact_distance() {
-    let mut rng = Rng::new(816);
+    touch_at_a_padding_just_above_the_exact_distance(
+        816,
+        "hooked chains among mesh obstacles",
+        hooks_among_hooks,
+    );
+}
+
+/// The edges of the scenes `build` makes (six, of 3 to 5 joints), checked
+/// against the sampled truth with the hulls on: never Free where the truth
+/// touches, never late; both outcomes occur.
+fn edges_by_hulls_are_never_free_or_late(
+    seed: u64,
+    edge_seed: u64,
+    what: &str,
+    build: fn(&mut Rng, usize) -> ChainScene<f64>,
+) {
+    let mut rng = Rng::new(seed);
+    let mut total = Tally::default();
+    for k in 0..6u64 {
+        let scene = build(&mut rng, 3 + (k as usize) % 3);
+        let truth = Truth::new(&scene);
+        let t = check_edges(&scene, &truth, 2 * cases(), edge_seed + k, true, false);
+        total.add(&t);
+    }
+    eprintln!("{what}: {total:?}");
+    assert_eq!(total.unsound(), (0, 0, 0, 0), "{total:?}");
+    assert!(
+        total.colliding > 0 && total.free > 0,
+        "the edges both hit and miss: {total:?}"
+    );
+}
+
+/// At random configurations of the scenes `build` makes, the static check
+/// with the padding just above the least exact distance finds them touching;
+/// at 90 % of it, apart on most configurations.
+fn touch_at_a_padding_just_above_the_exact_distance(
+    seed: u64,
+    what: &str,
+    build: fn(&mut Rng, usize) -> ChainScene<f64>,
+) {
+    let mut rng = Rng::new(seed);
     let (mut checked, mut apart) = (0, 0);
     for k in 0..6usize {
-        let mut scene = hooks_among_hooks(&mut rng, 3 + k % 3);
+        let mut scene = build(&mut rng, 3 + k % 3);
         let exact = Exact::new(&scene);
         let limits = limits_of(scene.chain());
         for _ in 0..4 * cases() {
@@ -1407,9 +1395,7 @@ fn links_and_mesh_obstacles_touch_at_a_padding_just_above_their_exact_distance()
             apart += usize::from(!scene.collides_at(&q).expect("valid q"));
         }
     }
-    eprintln!(
-        "hooked chains among mesh obstacles at one time: {apart} of {checked} apart at 90 % of the distance"
-    );
+    eprintln!("{what} at one time: {apart} of {checked} apart at 90 % of the distance");
     assert!(checked > 0, "some configurations are free");
     assert!(
         apart * 2 >= checked,
