@@ -39,7 +39,7 @@ mod chain_truth;
 
 use std::time::Instant;
 
-use arm_scene::{bare_arm_scene, cuboid, joint_limits, panda_edge, Arm};
+use arm_scene::{bare_arm_scene, cuboid, joint_limits, panda_edge, pole_sites, Arm};
 use chain_truth::Truth;
 use motion_bound::chain::{ChainScene, EdgeOutcome, Obstacle, SegmentOutcome, ShapeObstacle};
 use motion_bound::{bodies, Convex, Pose, Vec3};
@@ -211,19 +211,7 @@ fn poles(arm: &ChainScene<f64>, segments: usize, seed: u64) -> Result<Scenes, Er
         bodies::prism(radius, length, sides, 1)?,
         bodies::prism(radius, length, sides, (length / 0.04).round() as u32)?,
     );
-    let mut placed: Vec<[f64; 2]> = Vec::new();
-    while placed.len() < 20 {
-        // Upright on the floor, 0.3 to 0.8 m from the base's axis, at
-        // least 10 cm apart.
-        let (r, a) = (rng.range(0.3, 0.8), rng.range(-3.1, 3.1));
-        let p = [r * a.cos(), r * a.sin()];
-        if placed
-            .iter()
-            .any(|q| (q[0] - p[0]).hypot(q[1] - p[1]) < 0.1)
-        {
-            continue;
-        }
-        placed.push(p);
+    for p in pole_sites(&mut rng) {
         let pose = Pose::from_translation(Vec3::new(p[0], p[1], length / 2.0));
         let name = "pole";
         coarse.add_obstacle(Obstacle::try_new(name, thin.clone(), pose)?);

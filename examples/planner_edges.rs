@@ -56,7 +56,7 @@ mod chain_truth;
 use std::fmt::Write as _;
 use std::time::Instant;
 
-use arm_scene::{bare_arm_scene, joint_limits, panda_edge, Arm};
+use arm_scene::{bare_arm_scene, joint_limits, panda_edge, pole_sites, Arm};
 use chain_truth::Truth;
 use motion_bound::chain::{ChainParams, ChainScene, EdgeOutcome, Obstacle, ShapeObstacle};
 use motion_bound::{bodies, Convex, Pose, TriMesh, Vec3};
@@ -244,20 +244,9 @@ fn load(name: &str) -> Result<Scene, Error> {
 /// the base's axis, at least 10 cm apart.
 fn poles(seed: u64) -> Result<Vec<Obstacle<f64>>, Error> {
     let (radius, length, sides) = (0.025, 1.0, 12);
-    let mut rng = Rng::new(seed ^ 0x9e37_79b9_7f4a_7c15);
     let thin = bodies::prism(radius, length, sides, 1)?;
-    let mut placed: Vec<[f64; 2]> = Vec::new();
     let mut out = Vec::new();
-    while placed.len() < 20 {
-        let (r, a) = (rng.range(0.3, 0.8), rng.range(-3.1, 3.1));
-        let p = [r * a.cos(), r * a.sin()];
-        if placed
-            .iter()
-            .any(|q| (q[0] - p[0]).hypot(q[1] - p[1]) < 0.1)
-        {
-            continue;
-        }
-        placed.push(p);
+    for p in pole_sites(&mut Rng::new(seed ^ 0x9e37_79b9_7f4a_7c15)) {
         let pose = Pose::from_translation(Vec3::new(p[0], p[1], length / 2.0));
         out.push(Obstacle::try_new("pole", thin.clone(), pose)?);
     }

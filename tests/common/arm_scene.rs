@@ -349,3 +349,22 @@ pub fn chain_in_f32(chain: &Chain<f64>) -> (Chain<f32>, Chain<f64>) {
     }
     (c32, b64.build().expect("f64 chain"))
 }
+
+/// Where the 20 thin poles of `examples/narrow_passage.rs` and
+/// `examples/planner_edges.rs` stand: `(x, y)` on the floor, 0.3 to 0.8 m
+/// from the base's axis, at least 10 cm apart, drawn from `rng`.
+pub fn pole_sites(rng: &mut Rng) -> Vec<[f64; 2]> {
+    let mut placed: Vec<[f64; 2]> = Vec::new();
+    while placed.len() < 20 {
+        let (r, a) = (rng.range(0.3, 0.8), rng.range(-3.1, 3.1));
+        let p = [r * a.cos(), r * a.sin()];
+        if placed
+            .iter()
+            .any(|q| (q[0] - p[0]).hypot(q[1] - p[1]) < 0.1)
+        {
+            continue;
+        }
+        placed.push(p);
+    }
+    placed
+}
