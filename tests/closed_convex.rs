@@ -79,6 +79,34 @@ fn within_contact_distance(
     touch_at(m, ma, &grown, mb, t)
 }
 
+/// Never missed, never late against the sampled first contact `truth`, and
+/// never early: at a contact by distance the sampled bodies `a` and `b` are
+/// within the contact distance (`slack` for a tessellated truth's sagitta).
+fn judge(
+    outcome: &CaOutcome<f64>,
+    truth: Option<f64>,
+    a: (&Solid, &RigidMotion<f64>),
+    b: (&Solid, &RigidMotion<f64>),
+    slack: f64,
+    what: &str,
+) {
+    match (outcome.earliest_possible_contact(), truth) {
+        (None, Some(_)) => panic!("MISSED: {what}"),
+        (Some(t), Some(g)) => assert!(t <= g, "LATE: {what}"),
+        _ => {}
+    }
+    if let CaOutcome::Contact {
+        contact,
+        criterion: ContactCriterion::Distance,
+    } = *outcome
+    {
+        assert!(
+            within_contact_distance(a.0, a.1, b.0, b.1, contact.time, slack),
+            "EARLY: {what}"
+        );
+    }
+}
+
 #[test]
 fn closed_convex_meshes_are_stepped_as_their_hulls_never_late_missed_or_early() {
     let mut rng = Rng::new(55);
@@ -118,21 +146,14 @@ fn closed_convex_meshes_are_stepped_as_their_hulls_never_late_missed_or_early() 
                 let report = time_of_impact(&mut pair, &ma, &mb, &params).expect("a query");
                 let truth = first_sampled_contact(&truth_m, &ma, truth_s, &mb, (0.0, 1.0), SAMPLES);
                 let what = format!("{name} vs {kind} query {q}: {report:?}, sampled {truth:?}");
-                match (report.outcome.earliest_possible_contact(), truth) {
-                    (None, Some(_)) => panic!("MISSED: {what}"),
-                    (Some(t), Some(g)) => assert!(t <= g, "LATE: {what}"),
-                    _ => {}
-                }
-                if let CaOutcome::Contact {
-                    contact,
-                    criterion: ContactCriterion::Distance,
-                } = report.outcome
-                {
-                    assert!(
-                        within_contact_distance(&truth_m, &ma, truth_s, &mb, contact.time, slack),
-                        "EARLY: {what}"
-                    );
-                }
+                judge(
+                    &report.outcome,
+                    truth,
+                    (&truth_m, &ma),
+                    (truth_s, &mb),
+                    slack,
+                    &what,
+                );
                 contacts += usize::from(report.outcome.contact().is_some());
                 sampled += usize::from(truth.is_some());
                 hull_alone += usize::from(pair.stats().node_pairs == 0);
@@ -189,21 +210,14 @@ fn bodies_inside_a_hollow_closed_convex_mesh_meet_only_its_walls() {
                 !matches!(report.outcome, CaOutcome::InitialContact(_)),
                 "inside is not a contact: {what}"
             );
-            match (report.outcome.earliest_possible_contact(), truth) {
-                (None, Some(_)) => panic!("MISSED: {what}"),
-                (Some(t), Some(g)) => assert!(t <= g, "LATE: {what}"),
-                _ => {}
-            }
-            if let CaOutcome::Contact {
-                contact,
-                criterion: ContactCriterion::Distance,
-            } = report.outcome
-            {
-                assert!(
-                    within_contact_distance(&truth_m, &ma, truth_s, &mb, contact.time, 1e-9),
-                    "EARLY: {what}"
-                );
-            }
+            judge(
+                &report.outcome,
+                truth,
+                (&truth_m, &ma),
+                (truth_s, &mb),
+                1e-9,
+                &what,
+            );
             contacts += usize::from(report.outcome.contact().is_some());
             descended += usize::from(pair.stats().node_pairs > 0);
             n += 1;
@@ -326,21 +340,14 @@ fn solid_closed_convex_meshes_meet_other_meshes_as_their_hulls() {
                     )
                 };
                 let what = format!("{name_a} vs {name_b} query {q}: {report:?}, sampled {truth:?}");
-                match (report.outcome.earliest_possible_contact(), truth) {
-                    (None, Some(_)) => panic!("MISSED: {what}"),
-                    (Some(t), Some(g)) => assert!(t <= g, "LATE: {what}"),
-                    _ => {}
-                }
-                if let CaOutcome::Contact {
-                    contact,
-                    criterion: ContactCriterion::Distance,
-                } = report.outcome
-                {
-                    assert!(
-                        within_contact_distance(&truth_a, &ma, &truth_b, &mb, contact.time, 1e-9),
-                        "EARLY: {what}"
-                    );
-                }
+                judge(
+                    &report.outcome,
+                    truth,
+                    (&truth_a, &ma),
+                    (&truth_b, &mb),
+                    1e-9,
+                    &what,
+                );
                 contacts += usize::from(report.outcome.contact().is_some());
                 sampled += usize::from(truth.is_some());
                 n += 1;
