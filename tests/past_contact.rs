@@ -161,7 +161,7 @@ fn board_at_a_wall<T: Float>() {
         // in; 3: any spin about any axis, any velocity.
         let vx = match kind {
             0 => 0.0,
-            1 => rng.range(0.1, 5.0) * -1.0,
+            1 => -rng.range(0.1, 5.0),
             2 => rng.range(0.1, 5.0),
             _ => rng.range(-3.0, 3.0),
         };

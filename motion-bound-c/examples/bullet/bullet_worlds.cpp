@@ -4,7 +4,8 @@
 //
 // Each world is launched N times (argument 1, default 40; each launch a seed:
 // random start poses, velocities and spins) and stepped 150 times at
-// dt = 1/60 with gravity off, twice with the same launches:
+// dt = 1/60 with gravity off, twice with the same launches (argument 2, a
+// world's name, runs that world alone):
 //
 // - bullet: Bullet's own CCD on every dynamic body (setCcdMotionThreshold,
 //   setCcdSweptSphereRadius: a sphere swept along the translation);
@@ -16,8 +17,8 @@
 //   pairs. A pair already within the contact distance at the start (a body
 //   stopped there by the last step, or resting against the other) is cast
 //   once more, against the half-space just past the plane that separated
-//   it at the start (mb_past_contact): no hit when it slides along or
-//   leaves, else the first time it may go deeper. Only when that is not
+//   it at the start (mb_past_contact, along the report's normal): no hit
+//   when it slides along or leaves, else the first time it may go deeper. Only when that is not
 //   decided (both bodies rotating) or the pair is already deeper than the
 //   contact distance is it asked again with a contact distance half its
 //   gap, so that a corner cutting in and out within the step is still
@@ -301,8 +302,9 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
                                     &r),
                   "time of impact");
             if (std::getenv("BULLET_WORLDS_DEBUG"))
-                std::fprintf(stderr, "cast (%zu, %zu): outcome %d time %g distance %g\n", i, j,
-                             int(r.outcome), r.time, r.distance);
+                std::fprintf(stderr, "cast (%zu, %zu): outcome %d time %g distance %g normal (%g %g %g)\n",
+                             i, j, int(r.outcome), r.time, r.distance, r.normal.x, r.normal.y,
+                             r.normal.z);
             if (r.outcome == MB_OUTCOME_SEPARATED) continue;
             double t = r.time;
             if (r.outcome == MB_OUTCOME_INITIAL_CONTACT && std::isfinite(r.normal.x)) {
@@ -472,13 +474,16 @@ Tally run(const std::string &name, int launches, bool ours) {
 
 int main(int argc, char **argv) {
     int launches = argc > 1 ? std::atoi(argv[1]) : 40;
+    // An optional second argument runs one world (for profiling).
+    const char *only = argc > 2 ? argv[2] : nullptr;
     if (launches <= 0) {
-        std::fprintf(stderr, "usage: bullet_worlds [launches > 0]\n");
+        std::fprintf(stderr, "usage: bullet_worlds [launches > 0] [board|bat|bullets|plate]\n");
         return 2;
     }
     std::printf("%d launches x %d steps per world, dt = 1/60, tolerance %.3g\n", launches, STEPS,
                 TOL);
     for (const char *name : {"board", "bat", "bullets", "plate"}) {
+        if (only && std::strcmp(only, name) != 0) continue;
         Tally b = run(name, launches, false);
         Tally o = run(name, launches, true);
         std::printf(
