@@ -69,10 +69,11 @@ pub enum PastContact<T> {
 /// let slide = RigidMotion::try_from_arrays(x, [0.0, 3.0, 0.0], [0.0; 3])?;
 /// let n = Vec3::new(1.0, 0.0, 0.0);
 /// assert_eq!(past_contact(board, &slide, wall, &still, n, &p)?, PastContact::Never);
-/// // Pushed in: from a time after the start.
+/// // Pushed in at 2: from the time it is within the contact distance of
+/// // the plane 1.5e-4 past the face, 5e-5 + (0.5 to 1.5) e-4 on.
 /// let push = RigidMotion::try_from_arrays(x, [2.0, 0.0, 0.0], [0.0; 3])?;
 /// match past_contact(board, &push, wall, &still, n, &p)? {
-///     PastContact::At(t) => assert!(t > 0.0 && t <= 1.5e-4 / 2.0),
+///     PastContact::At(t) => assert!(t >= 0.5e-4 * (1.0 - 1e-9) && t <= 1e-4),
 ///     other => panic!("{other:?}"),
 /// }
 /// # Ok::<(), Box<dyn std::error::Error>>(())
