@@ -203,6 +203,29 @@ typedef enum mb_criterion {
 } mb_criterion;
 
 /**
+ * What `mb_past_contact` found (`mb_past_report.outcome`).
+ */
+typedef enum mb_past_outcome {
+  /**
+   * Body A's extent along the normal, beyond body B's least, never grows
+   * by the contact distance over the interval (certified: it slides along
+   * B or leaves it).
+   */
+  MB_PAST_OUTCOME_NEVER = 0,
+  /**
+   * It may from `time` on (never later than the first time it does; the
+   * interval's start when A already reaches more than the contact
+   * distance past B along the normal).
+   */
+  MB_PAST_OUTCOME_AT = 1,
+  /**
+   * Not decided (both bodies rotate, a body is a half-space, or a value
+   * overflowed): ask `mb_time_of_impact` again or hold the body.
+   */
+  MB_PAST_OUTCOME_UNDECIDED = 2,
+} mb_past_outcome;
+
+/**
  * The kind of a shape (`mb_shape_get_kind`).
  */
 typedef enum mb_shape_kind {
@@ -682,6 +705,20 @@ typedef struct mb_pair_query {
    */
   const struct mb_motion *motion_b;
 } mb_pair_query;
+
+/**
+ * `mb_past_contact`'s answer.
+ */
+typedef struct mb_past_report {
+  /**
+   * Never, from `time` on, or undecided.
+   */
+  enum mb_past_outcome outcome;
+  /**
+   * For `MB_PAST_OUTCOME_AT`, the time; NaN otherwise.
+   */
+  double time;
+} mb_past_report;
 
 /**
  * One pair of a scene query's answer.
@@ -1281,6 +1318,41 @@ enum mb_status mb_time_of_impact_batch(const struct mb_pair_query *queries,
                                        size_t count,
                                        const struct mb_params *params,
                                        struct mb_report *out);
+
+/**
+ * For bodies within the contact distance at the start of their motions'
+ * interval (`mb_time_of_impact` answered `MB_OUTCOME_INITIAL_CONTACT`):
+ * whether body A goes deeper into body B along `normal` (the report's
+ * `normal`, from A to B; any nonzero vector is sound) over the interval,
+ * certified, with one cast against the half-space just past the plane that
+ * separates them at the start, carried along by B's translation (Rust
+ * crate: `ca::past_contact`; `proofs/12-shapes.md`, Lemma 12.11). Until
+ * the answer's time, A's extent along `normal` beyond B's least grows by
+ * less than the contact distance. A body sliding along a surface it rests
+ * on costs one cheap cast instead of a full query with a smaller contact
+ * distance. B must not rotate, or A must not (the roles then swap).
+ * `params` may be `NULL` for the defaults. The answer is written to `*out`.
+ *
+ * `MB_STATUS_NULL_POINTER` / `MB_STATUS_INVALID_HANDLE` for a bad handle,
+ * `MB_STATUS_INVALID_INPUT` for a zero or non-finite `normal`,
+ * `MB_STATUS_INVALID_PARAMETER` for parameters out of range,
+ * `MB_STATUS_QUERY_ERROR` for motions over different intervals.
+ *
+ * **Thread safety**: any thread; the shapes, motions and params may be
+ * shared by concurrent calls.
+ *
+ * # Safety
+ * The handles are not freed during the call; `params` is `NULL` or valid
+ * for reading an `mb_params`; `out` is `NULL` or valid for writing an
+ * `mb_past_report`.
+ */
+enum mb_status mb_past_contact(const struct mb_shape *shape_a,
+                               const struct mb_motion *motion_a,
+                               const struct mb_shape *shape_b,
+                               const struct mb_motion *motion_b,
+                               struct mb_vec3 normal,
+                               const struct mb_params *params,
+                               struct mb_past_report *out);
 
 /**
  * A new empty scene over `[0, duration]`, written to `*out`.

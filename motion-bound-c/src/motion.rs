@@ -59,8 +59,12 @@ impl MbVec3 {
     /// The vector of the argument `what`, its components finite (else an
     /// error naming the component: `linear.y`).
     pub(crate) fn checked(self, what: &str) -> Res<Vec3<f64>> {
+        // The name is formatted only for an error (an engine's step calls
+        // this for every body: formatting cost as much as the cast).
         for (c, x) in ["x", "y", "z"].iter().zip(self.array()) {
-            ArgError::finite(x, &format!("{what}.{c}"))?;
+            if !x.is_finite() {
+                ArgError::finite(x, &format!("{what}.{c}"))?;
+            }
         }
         Ok(self.vec())
     }
@@ -86,7 +90,9 @@ impl MbQuat {
             .iter()
             .zip([self.w, self.x, self.y, self.z])
         {
-            ArgError::finite(x, &format!("{what}.{c}"))?;
+            if !x.is_finite() {
+                ArgError::finite(x, &format!("{what}.{c}"))?;
+            }
         }
         Ok(
             Rotation::try_from_quaternion(self.w, self.x, self.y, self.z)
@@ -99,6 +105,20 @@ impl MbPose {
     /// The placement of the argument `what` (`start`, `poses[2]`); errors
     /// name it and the field (`start.translation.x`, `poses[2].rotation`).
     pub(crate) fn isometry(self, what: &str) -> Res<Isometry<f64>> {
+        // The same computation with no name formatted, when nothing fails;
+        // else again below, naming the argument.
+        let (q, t) = (self.rotation, self.translation);
+        if [q.w, q.x, q.y, q.z, t.x, t.y, t.z]
+            .iter()
+            .all(|x| x.is_finite())
+        {
+            if let Some(pose) = Rotation::try_from_quaternion(q.w, q.x, q.y, q.z)
+                .ok()
+                .and_then(|r| Isometry::try_new(r, t.vec()).ok())
+            {
+                return Ok(pose);
+            }
+        }
         let r = self.rotation.rotation(&format!("{what}.rotation"))?;
         let t = self.translation.checked(&format!("{what}.translation"))?;
         Ok(Isometry::try_new(r, t).map_err(ArgError::input(what))?)

@@ -1,10 +1,10 @@
 //! The pair query: parameters, report, `mb_time_of_impact`.
 
 use motion_bound::ca::{
-    time_of_impact, AnyPair, BoundChoice, CaError, CaOutcome, CaParams, CaReport, ContactCriterion,
-    MeshWorkspace, OwnedShape, WitnessSearch, Work,
+    past_contact, time_of_impact, AnyPair, BoundChoice, CaError, CaOutcome, CaParams, CaReport,
+    ContactCriterion, MeshWorkspace, OwnedShape, PastContact, WitnessSearch, Work,
 };
-use motion_bound::RigidMotion;
+use motion_bound::{RigidMotion, Vec3};
 use rayon::prelude::*;
 
 use crate::error::{guard, Failure, MbStatus, Res};
@@ -440,5 +440,117 @@ pub unsafe extern "C" fn mb_time_of_impact_batch(
         // SAFETY: `out` is NULL or writable for `count` reports (this
         // function's contract).
         unsafe { write_slice(out, &reports, "out") }
+    })
+}
+
+/// What `mb_past_contact` found (`mb_past_report.outcome`).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum MbPastOutcome {
+    /// Body A's extent along the normal, beyond body B's least, never grows
+    /// by the contact distance over the interval (certified: it slides along
+    /// B or leaves it).
+    Never = 0,
+    /// It may from `time` on (never later than the first time it does; the
+    /// interval's start when A already reaches more than the contact
+    /// distance past B along the normal).
+    At = 1,
+    /// Not decided (both bodies rotate, a body is a half-space, or a value
+    /// overflowed): ask `mb_time_of_impact` again or hold the body.
+    Undecided = 2,
+}
+
+/// `mb_past_contact`'s answer.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MbPastReport {
+    /// Never, from `time` on, or undecided.
+    pub outcome: MbPastOutcome,
+    /// For `MB_PAST_OUTCOME_AT`, the time; NaN otherwise.
+    pub time: f64,
+}
+
+/// For bodies within the contact distance at the start of their motions'
+/// interval (`mb_time_of_impact` answered `MB_OUTCOME_INITIAL_CONTACT`):
+/// whether body A goes deeper into body B along `normal` (the report's
+/// `normal`, from A to B; any nonzero vector is sound) over the interval,
+/// certified, with one cast against the half-space just past the plane that
+/// separates them at the start, carried along by B's translation (Rust
+/// crate: `ca::past_contact`; `proofs/12-shapes.md`, Lemma 12.11). Until
+/// the answer's time, A's extent along `normal` beyond B's least grows by
+/// less than the contact distance. A body sliding along a surface it rests
+/// on costs one cheap cast instead of a full query with a smaller contact
+/// distance. B must not rotate, or A must not (the roles then swap).
+/// `params` may be `NULL` for the defaults. The answer is written to `*out`.
+///
+/// `MB_STATUS_NULL_POINTER` / `MB_STATUS_INVALID_HANDLE` for a bad handle,
+/// `MB_STATUS_INVALID_INPUT` for a zero or non-finite `normal`,
+/// `MB_STATUS_INVALID_PARAMETER` for parameters out of range,
+/// `MB_STATUS_QUERY_ERROR` for motions over different intervals.
+///
+/// **Thread safety**: any thread; the shapes, motions and params may be
+/// shared by concurrent calls.
+///
+/// # Safety
+/// The handles are not freed during the call; `params` is `NULL` or valid
+/// for reading an `mb_params`; `out` is `NULL` or valid for writing an
+/// `mb_past_report`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn mb_past_contact(
+    shape_a: *const MbShape,
+    motion_a: *const MbMotion,
+    shape_b: *const MbShape,
+    motion_b: *const MbMotion,
+    normal: MbVec3,
+    params: *const MbParams,
+    out: *mut MbPastReport,
+) -> MbStatus {
+    guard(|| {
+        // SAFETY: the handles are not freed during the call, and `params` is
+        // NULL or readable (this function's contract).
+        let (sa, ma, sb, mb, p) = unsafe {
+            (
+                handle_ref(shape_a, "shape_a")?,
+                handle_ref(motion_a, "motion_a")?,
+                handle_ref(shape_b, "shape_b")?,
+                handle_ref(motion_b, "motion_b")?,
+                read_in(params, "params")?,
+            )
+        };
+        let n = normal.checked("normal")?;
+        if n == Vec3::ZERO {
+            return Err(Failure::new(
+                MbStatus::InvalidInput,
+                "normal: the zero vector (give the contact normal from A to B)",
+            ));
+        }
+        let p = self::params(p)?;
+        let (pa, pb) = (sa.data.prepare(), sb.data.prepare());
+        let (pa, pb) = (
+            pa.map_err(|e| pair_failure(e.into(), ""))?,
+            pb.map_err(|e| pair_failure(e.into(), ""))?,
+        );
+        let answer = past_contact(pa.shape(), &ma.motion, pb.shape(), &mb.motion, n, &p).map_err(
+            |e| match e {
+                CaError::Input(e) => Failure::new(MbStatus::InvalidInput, format!("normal: {e}")),
+                e => pair_failure(e, ""),
+            },
+        )?;
+        let report = match answer {
+            PastContact::Never => MbPastReport {
+                outcome: MbPastOutcome::Never,
+                time: f64::NAN,
+            },
+            PastContact::At(t) => MbPastReport {
+                outcome: MbPastOutcome::At,
+                time: t,
+            },
+            _ => MbPastReport {
+                outcome: MbPastOutcome::Undecided,
+                time: f64::NAN,
+            },
+        };
+        // SAFETY: `out` is NULL or writable (this function's contract).
+        unsafe { write_out(out, report, "out") }
     })
 }

@@ -43,6 +43,9 @@ mod convex_convex;
 mod convex_half_space;
 #[cfg(feature = "alloc")]
 mod mesh;
+// A pair touching at the start: does it go deeper?
+#[cfg(feature = "alloc")]
+mod past_contact;
 // A body starting inside a solid mesh: the mesh steppers' check at the start.
 #[cfg(feature = "alloc")]
 mod solid;
@@ -75,6 +78,8 @@ pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness, Work}
 #[cfg(feature = "alloc")]
 pub use owned::{Hull, OwnedCompound, OwnedMesh, OwnedPart, OwnedShape, PreparedShape, Primitive};
 pub use params::{BoundChoice, CaError, CaParams, MeshParams, Parameter, WitnessSearch};
+#[cfg(feature = "alloc")]
+pub use past_contact::{past_contact, PastContact};
 #[cfg(feature = "alloc")]
 pub use shape::{Compound, Part, Shape, ShapeKind};
 pub use step::{gap_step, placement_error, CaStep, StepResult};

@@ -997,6 +997,82 @@ static void test_batch(void) {
     OK(mb_motion_free(longer));
 }
 
+/*
+ * A cube (a closed mesh) resting 0.5 d above the plate (d the contact
+ * distance): mb_time_of_impact says initial contact; mb_past_contact says
+ * never deeper when it slides or lifts, and when pressed down at 1 m/s,
+ * a time after the start when the cube is within d of the half-space
+ * 1.5 d past the plane that separated them: between (gap + 0.5 d) / v and
+ * (gap + 1.5 d) / v. Bad arguments are named.
+ */
+static void test_past_contact(void) {
+    const double d = 1e-3, gap = 0.5e-3, h = 0.1;
+    mb_params p = mb_params_default();
+    p.contact_distance = d;
+    mb_shape *cube = cube_mesh(h, MB_MESH_SOLIDITY_AUTO);
+    mb_shape *plate = plate_mesh();
+    mb_motion *still = moving(at(0, 0, 0), ZERO, ZERO, 1.0 / 60.0);
+    const struct {
+        const char *what;
+        mb_vec3 v, w;
+        int deeper;
+    } cases[] = {
+        {"slides and spins about z", {3, -2, 0}, {0, 0, 40}, 0},
+        {"lifts", {1, 0, 2}, {0, 0, 0}, 0},
+        {"pressed down", {0, 0, -1}, {0, 0, 0}, 1},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        mb_motion *m = moving(at(0.3, -0.2, h + gap), cases[k].v, cases[k].w, 1.0 / 60.0);
+        mb_report r = toi(cube, m, plate, still, &p);
+        CHECK(r.outcome == MB_OUTCOME_INITIAL_CONTACT && r.normal.z < -0.99,
+              "%s: outcome %d normal z %g", cases[k].what, (int)r.outcome, r.normal.z);
+        mb_past_report past;
+        OK(mb_past_contact(cube, m, plate, still, r.normal, &p, &past));
+        if (cases[k].deeper) {
+            double lo = (gap + 0.5 * d) / 1.0, hi = (gap + 1.5 * d) / 1.0;
+            CHECK(past.outcome == MB_PAST_OUTCOME_AT && past.time >= lo * (1 - 1e-9) &&
+                      past.time <= hi * (1 + 1e-9),
+                  "%s: outcome %d time %g not in [%g, %g]", cases[k].what, (int)past.outcome,
+                  past.time, lo, hi);
+        } else {
+            CHECK(past.outcome == MB_PAST_OUTCOME_NEVER && isnan(past.time),
+                  "%s: outcome %d time %g", cases[k].what, (int)past.outcome, past.time);
+        }
+        mb_motion_free(m);
+    }
+    /* Both turning: not decided. */
+    mb_motion *spin = moving(at(0, 0, h + gap), ZERO, v3(0, 0, 1), 1.0 / 60.0);
+    mb_motion *plate_spin = moving(at(0, 0, 0), ZERO, v3(0, 1, 0), 1.0 / 60.0);
+    mb_past_report past;
+    OK(mb_past_contact(cube, spin, plate, plate_spin, v3(0, 0, -1), NULL, &past));
+    CHECK(past.outcome == MB_PAST_OUTCOME_UNDECIDED, "both turning: outcome %d",
+          (int)past.outcome);
+    /* Bad arguments, each named. */
+    mb_motion *unit = moving(at(0, 0, 1), ZERO, ZERO, 1.0);
+    FAILS(mb_past_contact(NULL, spin, plate, still, v3(0, 0, -1), NULL, &past),
+          MB_STATUS_NULL_POINTER, "shape_a is NULL");
+    FAILS(mb_past_contact(cube, spin, plate, NULL, v3(0, 0, -1), NULL, &past),
+          MB_STATUS_NULL_POINTER, "motion_b is NULL");
+    FAILS(mb_past_contact(cube, spin, plate, still, v3(0, 0, -1), NULL, NULL),
+          MB_STATUS_NULL_POINTER, "out is NULL");
+    FAILS(mb_past_contact(cube, spin, plate, still, ZERO, NULL, &past), MB_STATUS_INVALID_INPUT,
+          "normal: the zero vector");
+    FAILS(mb_past_contact(cube, spin, plate, still, v3(NAN, 0, 0), NULL, &past),
+          MB_STATUS_INVALID_INPUT, "normal.x");
+    FAILS(mb_past_contact(cube, unit, plate, still, v3(0, 0, -1), NULL, &past),
+          MB_STATUS_QUERY_ERROR, "motion_a, motion_b");
+    mb_params bad = p;
+    bad.contact_distance = -1.0;
+    FAILS(mb_past_contact(cube, spin, plate, still, v3(0, 0, -1), &bad, &past),
+          MB_STATUS_INVALID_PARAMETER, "params");
+    mb_motion_free(unit);
+    mb_motion_free(plate_spin);
+    mb_motion_free(spin);
+    mb_motion_free(still);
+    mb_shape_free(plate);
+    mb_shape_free(cube);
+}
+
 int main(void) {
     CHECK(strcmp(mb_last_error_message(), "") == 0, "a message before any failure");
     test_version_and_params();
@@ -1010,6 +1086,7 @@ int main(void) {
     test_scene();
     test_threads();
     test_batch();
+    test_past_contact();
     if (failures) {
         fprintf(stderr, "%d of %d checks FAILED\n", failures, checks);
         return 1;

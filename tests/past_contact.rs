@@ -1,0 +1,404 @@
+//! `ca::past_contact` (Lemma 12.11): a pair touching at the start goes
+//! deeper or not. Judged by dense sampling of the bodies' corners along the
+//! exact motions, never by the code under test: until the answer's time
+//! (the whole interval for `Never`), A's greatest `n . x` beyond B's least
+//! (their overlap along `n`) grows by less than the contact distance over
+//! its start value (or over zero, for a pair apart at the start).
+//!
+//! The story: a body stopped at a wall, then resting on or sliding along
+//! it, was cast every step from a touching start and asked again with half
+//! the gap as contact distance (Bullet's example, `bullet_worlds.cpp`),
+//! a full query of many iterations for a spinning board. These cases are
+//! the ones that rule must still catch (pushed in, a corner of a spinning
+//! board swinging into the wall) and the ones it must let go cheaply
+//! (sliding, leaving, spinning about the normal).
+
+use motion_bound::ca::{past_contact, CaError, CaParams, PastContact, Shape};
+use motion_bound::{BallTree, BodyPoint, Convex, Float, Isometry, RigidMotion, Rotation, Vec3};
+
+const DT: f64 = 1.0 / 60.0;
+const SAMPLES: usize = 4000;
+
+/// A small deterministic generator (SplitMix64), the test's own.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> f64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^= z >> 31;
+        (z >> 11) as f64 / (1u64 << 53) as f64
+    }
+    fn range(&mut self, a: f64, b: f64) -> f64 {
+        a + (b - a) * self.next()
+    }
+    fn unit(&mut self) -> [f64; 3] {
+        loop {
+            let v = [
+                self.range(-1.0, 1.0),
+                self.range(-1.0, 1.0),
+                self.range(-1.0, 1.0),
+            ];
+            let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+            if l > 0.1 && l <= 1.0 {
+                return v.map(|x| x / l);
+            }
+        }
+    }
+}
+
+fn corners(h: [f64; 3]) -> Vec<[f64; 3]> {
+    let mut out = Vec::new();
+    for s in 0..8 {
+        let sign = |k: usize| if s >> k & 1 == 1 { 1.0 } else { -1.0 };
+        out.push([sign(0) * h[0], sign(1) * h[1], sign(2) * h[2]]);
+    }
+    out
+}
+
+fn v3<T: Float>(a: [f64; 3]) -> Vec3<T> {
+    Vec3::new(T::from_f64(a[0]), T::from_f64(a[1]), T::from_f64(a[2]))
+}
+
+/// The motion of a body at `x` turned by `turn` (axis-angle), with linear
+/// velocity `v` and angular velocity `w`, over one step.
+fn motion<T: Float>(
+    x: [f64; 3],
+    turn: ([f64; 3], f64),
+    v: [f64; 3],
+    w: [f64; 3],
+) -> RigidMotion<T> {
+    let r = Rotation::try_from_axis_angle(v3(turn.0), T::from_f64(turn.1)).expect("a rotation");
+    let start = Isometry::try_new(r, v3(x)).expect("a pose");
+    RigidMotion::try_from_start(start, v3(v), v3(w), T::from_f64(DT)).expect("a motion")
+}
+
+/// `max` (or `min`) of `n . x` over the body points `points` at `t`, by the
+/// motion's own definition of a body point's position.
+fn reach<T: Float>(m: &RigidMotion<T>, points: &[[f64; 3]], n: [f64; 3], t: f64, max: bool) -> f64 {
+    let dots = points.iter().map(|p| {
+        let q = m.point_at(
+            BodyPoint::new(T::from_f64(p[0]), T::from_f64(p[1]), T::from_f64(p[2])),
+            T::from_f64(t),
+        );
+        let q = q.to_array().map(T::to_f64);
+        q[0] * n[0] + q[1] * n[1] + q[2] * n[2]
+    });
+    if max {
+        dots.fold(f64::NEG_INFINITY, f64::max)
+    } else {
+        dots.fold(f64::INFINITY, f64::min)
+    }
+}
+
+/// The certified claim, sampled: before `until`, the overlap along `n`
+/// grows by less than `d` (a relative `1e-9` for sampling's arithmetic,
+/// `1e-5 d` more in `f32`, whose placement error is near that). Returns the
+/// first sampled time the overlap grows by more than `1.5 d` (the plane).
+#[allow(clippy::too_many_arguments)]
+fn judge<T: Float>(
+    ma: &RigidMotion<T>,
+    pa: &[[f64; 3]],
+    mb: &RigidMotion<T>,
+    pb: &[[f64; 3]],
+    n: [f64; 3],
+    d: f64,
+    until: f64,
+    what: &str,
+) -> Option<f64> {
+    let overlap = |t: f64| reach(ma, pa, n, t, true) - reach(mb, pb, n, t, false);
+    let start = overlap(0.0).max(0.0);
+    let slack = if T::UNIT_ROUNDOFF.to_f64() > 1e-10 {
+        2e-2 * d
+    } else {
+        1e-9
+    };
+    let mut first_past_plane = None;
+    for k in 0..=SAMPLES {
+        let t = DT * k as f64 / SAMPLES as f64;
+        let grown = overlap(t) - start;
+        if t < until {
+            assert!(
+                grown < d + slack,
+                "{what}: at t = {t} (answer's time {until}) the overlap grew by {grown} >= d = {d}"
+            );
+        }
+        if grown > 1.5 * d + slack && first_past_plane.is_none() {
+            first_past_plane = Some(t);
+        }
+    }
+    first_past_plane
+}
+
+fn time_of<T: Float>(answer: PastContact<T>) -> f64 {
+    match answer {
+        PastContact::Never => f64::INFINITY,
+        PastContact::At(t) => t.to_f64(),
+        other => panic!("undecided: {other:?}"),
+    }
+}
+
+/// A board (a cuboid 0.1 x 0.4 x 0.1 half extents) within the contact
+/// distance of a wall's face `x = 0.5` (a cuboid, still), spinning and
+/// moving at random: sliding along, leaving, pushed in; spinning about the
+/// normal (never deeper) or about any axis (a corner may swing in).
+fn board_at_a_wall<T: Float>() {
+    let d = 1e-3;
+    let p = CaParams::<T>::default().with_contact_distance(T::from_f64(d));
+    let (hb, hw) = ([0.1, 0.4, 0.1], [0.5, 2.0, 2.0]);
+    let board = Convex::try_cuboid(hb.map(T::from_f64)).expect("a board");
+    let wall = Convex::try_cuboid(hw.map(T::from_f64)).expect("a wall");
+    let (pb, pw) = (corners(hb), corners(hw));
+    let still = motion::<T>([1.0, 0.0, 0.0], ([1.0, 0.0, 0.0], 0.0), [0.0; 3], [0.0; 3]);
+    let n = [1.0, 0.0, 0.0];
+    let mut rng = Rng(55);
+    let (mut never, mut at, mut slides) = (0, 0, 0);
+    for case in 0..300 {
+        let gap = rng.range(0.05, 0.95) * d;
+        let kind = case % 4;
+        // 0: slides (no x velocity), spinning about x; 1: leaves; 2: pushed
+        // in; 3: any spin about any axis, any velocity.
+        let vx = match kind {
+            0 => 0.0,
+            1 => -rng.range(0.1, 5.0),
+            2 => rng.range(0.1, 5.0),
+            _ => rng.range(-3.0, 3.0),
+        };
+        let v = [vx, rng.range(-5.0, 5.0), rng.range(-5.0, 5.0)];
+        let w = if kind == 3 {
+            rng.unit().map(|c| c * rng.range(0.0, 80.0))
+        } else {
+            [rng.range(-80.0, 80.0), 0.0, 0.0]
+        };
+        let x = [0.5 - 0.1 - gap, rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)];
+        let m = motion::<T>(x, ([1.0, 0.0, 0.0], rng.range(0.0, 6.0)), v, w);
+        let answer = past_contact(
+            Shape::Convex(board),
+            &m,
+            Shape::Convex(wall),
+            &still,
+            v3(n),
+            &p,
+        )
+        .expect("a board and a wall");
+        let until = time_of(answer);
+        let what = format!("board case {case} (kind {kind})");
+        let past = judge(&m, &pb, &still, &pw, n, d, until, &what);
+        match answer {
+            PastContact::Never => never += 1,
+            _ => at += 1,
+        }
+        if kind <= 1 {
+            // Sliding and leaving: never deeper, and said so.
+            slides += 1;
+            assert_eq!(answer, PastContact::Never, "{what}");
+        }
+        if kind == 2 {
+            // Pushed in: a time after the start, no later than the sampled
+            // crossing of the plane.
+            assert!(
+                until > 0.0 && until <= past.expect("pushed past the plane"),
+                "{what}"
+            );
+        }
+    }
+    assert!(
+        slides == 150 && never >= 150 && at >= 75,
+        "{never} never, {at} at"
+    );
+}
+
+#[test]
+fn a_board_at_a_wall_goes_deeper_only_when_pushed_f64() {
+    board_at_a_wall::<f64>();
+}
+
+#[test]
+fn a_board_at_a_wall_goes_deeper_only_when_pushed_f32() {
+    board_at_a_wall::<f32>();
+}
+
+/// A cube (a closed triangle mesh) resting on a plate of two triangles
+/// (`z = 0`, zero thickness), sliding, lifting, pressed down and tumbling.
+#[test]
+fn a_mesh_cube_on_a_mesh_plate_goes_deeper_only_when_pressed() {
+    let d = 1e-3;
+    let p = CaParams::<f64>::default().with_contact_distance(d);
+    let h = 0.1;
+    let cube_points = corners([h; 3]);
+    let cube_triangles: [[u32; 3]; 12] = [
+        [0, 3, 1],
+        [0, 2, 3],
+        [4, 5, 7],
+        [4, 7, 6],
+        [0, 1, 5],
+        [0, 5, 4],
+        [2, 6, 7],
+        [2, 7, 3],
+        [1, 3, 7],
+        [1, 7, 5],
+        [0, 4, 6],
+        [0, 6, 2],
+    ];
+    let cube = BallTree::try_new(&cube_points, &cube_triangles).expect("a cube");
+    let plate_points = vec![
+        [-5.0, -5.0, 0.0],
+        [5.0, -5.0, 0.0],
+        [5.0, 5.0, 0.0],
+        [-5.0, 5.0, 0.0],
+    ];
+    let plate = BallTree::try_new(&plate_points, &[[0, 1, 2], [0, 2, 3]]).expect("a plate");
+    let still = motion::<f64>([0.0; 3], ([0.0, 0.0, 1.0], 0.0), [0.0; 3], [0.0; 3]);
+    // The cube above the plate: A's least `z` is B's greatest, so `n` is
+    // `-z` from the cube to the plate.
+    let n = [0.0, 0.0, -1.0];
+    let mut rng = Rng(12);
+    for case in 0..120 {
+        let kind = case % 3;
+        let gap = rng.range(0.05, 0.95) * d;
+        let vz = match kind {
+            0 => 0.0,
+            1 => rng.range(0.1, 5.0),
+            _ => -rng.range(0.1, 5.0),
+        };
+        let v = [rng.range(-5.0, 5.0), rng.range(-5.0, 5.0), vz];
+        let w = [0.0, 0.0, rng.range(-60.0, 60.0)];
+        let x = [rng.range(-2.0, 2.0), rng.range(-2.0, 2.0), h + gap];
+        let m = motion::<f64>(x, ([0.0, 0.0, 1.0], rng.range(0.0, 6.0)), v, w);
+        let answer = past_contact(
+            Shape::Mesh(&cube),
+            &m,
+            Shape::Mesh(&plate),
+            &still,
+            v3(n),
+            &p,
+        )
+        .expect("a cube and a plate");
+        let until = time_of(answer);
+        let what = format!("cube case {case} (kind {kind})");
+        let past = judge(&m, &cube_points, &still, &plate_points, n, d, until, &what);
+        match kind {
+            0 | 1 => assert_eq!(answer, PastContact::Never, "{what}"),
+            _ => assert!(until > 0.0 && until <= past.expect("pressed in"), "{what}"),
+        }
+    }
+}
+
+/// A still ball touched by a wall spinning about its normal, sliding,
+/// leaving or pushed at it (the wall is A and rotates, the ball B does not:
+/// B is cast against the half-space carried by A).
+#[test]
+fn the_roles_swap_when_only_the_second_body_rotates() {
+    let d = 1e-3;
+    let p = CaParams::<f64>::default().with_contact_distance(d);
+    let r = 0.05;
+    let ball = Convex::try_ball(r).expect("a ball");
+    let hw = [0.02, 1.0, 1.0];
+    let wall = Convex::try_cuboid(hw).expect("a wall");
+    // The ball's support points along +-x as body points, for sampling.
+    let ball_points: Vec<[f64; 3]> = (0..400)
+        .map(|k| {
+            let a = core::f64::consts::TAU * k as f64 / 400.0;
+            [r * a.cos(), r * a.sin(), 0.0]
+        })
+        .collect();
+    let ball_still = motion::<f64>([0.0; 3], ([0.0, 0.0, 1.0], 0.0), [0.0; 3], [0.0; 3]);
+    let n = [1.0, 0.0, 0.0];
+    for (vx, wx, deeper) in [(0.0, 5.0, false), (-2.0, 5.0, false), (2.0, 3.0, true)] {
+        // The wall's face x = -r - gap: the wall is A (at the ball's left).
+        let gap = 0.5 * d;
+        let m = motion::<f64>(
+            [-r - gap - 0.02, 0.0, 0.0],
+            ([0.0, 0.0, 1.0], 0.0),
+            [vx, 0.0, 0.0],
+            [wx, 0.0, 0.0],
+        );
+        let answer = past_contact(
+            Shape::Convex(wall),
+            &m,
+            Shape::Convex(ball),
+            &ball_still,
+            v3(n),
+            &p,
+        )
+        .expect("a wall and a ball");
+        let until = time_of(answer);
+        let past = judge(
+            &m,
+            &corners(hw),
+            &ball_still,
+            &ball_points,
+            n,
+            d,
+            until,
+            "wall at ball",
+        );
+        if deeper {
+            assert!(
+                until > 0.0 && until <= past.expect("pushed in"),
+                "{answer:?}"
+            );
+        } else {
+            assert_eq!(answer, PastContact::Never);
+        }
+    }
+    // Both rotate: not decided here.
+    let spin = motion::<f64>(
+        [-r - 0.0005 - 0.02, 0.0, 0.0],
+        ([0.0, 0.0, 1.0], 0.0),
+        [0.0; 3],
+        [0.0, 0.0, 1.0],
+    );
+    let ball_spin = motion::<f64>([0.0; 3], ([0.0, 0.0, 1.0], 0.0), [0.0; 3], [0.0, 1.0, 0.0]);
+    let answer = past_contact(
+        Shape::Convex(wall),
+        &spin,
+        Shape::Convex(ball),
+        &ball_spin,
+        v3(n),
+        &p,
+    );
+    assert_eq!(answer, Ok(PastContact::Undecided));
+}
+
+/// A pair already deeper than the contact distance along the normal is
+/// held at the start (else a pair stopped at the plane every step would
+/// creep in), unless the cast certifies it never reaches the plane.
+#[test]
+fn a_pair_deeper_than_the_contact_distance_is_held_at_the_start() {
+    let d = 1e-3;
+    let p = CaParams::<f64>::default().with_contact_distance(d);
+    let board = Convex::try_cuboid([0.1, 0.4, 0.1]).expect("a board");
+    let wall = Convex::try_cuboid([0.5, 2.0, 2.0]).expect("a wall");
+    let still = motion::<f64>([1.0, 0.0, 0.0], ([1.0, 0.0, 0.0], 0.0), [0.0; 3], [0.0; 3]);
+    let m = motion::<f64>(
+        [0.5 - 0.1 + 3.0 * d, 0.0, 0.0],
+        ([1.0, 0.0, 0.0], 0.0),
+        [1.0, 0.0, 0.0],
+        [0.0; 3],
+    );
+    let n = v3::<f64>([1.0, 0.0, 0.0]);
+    let answer = past_contact(Shape::Convex(board), &m, Shape::Convex(wall), &still, n, &p);
+    assert_eq!(answer, Ok(PastContact::At(0.0)));
+}
+
+/// Bad input is a typed error, not a panic.
+#[test]
+fn a_zero_or_nan_normal_and_mismatched_intervals_are_refused() {
+    let p = CaParams::<f64>::default();
+    let ball = Shape::Convex(Convex::try_ball(0.5).expect("a ball"));
+    let m = motion::<f64>([0.0; 3], ([1.0, 0.0, 0.0], 0.0), [0.0; 3], [0.0; 3]);
+    for n in [Vec3::ZERO, Vec3::new(f64::NAN, 0.0, 0.0)] {
+        assert!(matches!(
+            past_contact(ball, &m, ball, &m, n, &p),
+            Err(CaError::Input(_))
+        ));
+    }
+    let unit = RigidMotion::try_from_arrays([0.0; 3], [0.0; 3], [0.0; 3]).expect("a motion");
+    let n = Vec3::new(1.0, 0.0, 0.0);
+    assert_eq!(
+        past_contact(ball, &m, ball, &unit, n, &p),
+        Err(CaError::IntervalMismatch)
+    );
+}
