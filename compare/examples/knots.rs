@@ -2,14 +2,16 @@
 //! the crate: time per query and instruction counts.
 //!
 //! ```sh
-//! cargo run --release -p motion-bound-compare --example knots -- [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq] [--front on|off] [--witness closest|first] [--witness-tolerance X]
+//! cargo run --release -p motion-bound-compare --example knots -- [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq] [--passes P] [--front on|off] [--witness closest|first] [--witness-tolerance X]
 //! ```
 //!
 //! Runs queries `K .. K + N` of the scene of `--queries`'s length (default:
 //! all 200 queries of `table1`), one pass after a warm-up of the first
 //! eight, and prints per size: mean ms per query (the `Instant` around each
 //! query, as `table1` times it), iterations, node pairs, triangle pairs,
-//! contacts and separations. `--front on` carries the front from step to
+//! contacts and separations; `--passes P` runs them `P` times and prints
+//! also the mean over the queries of each one's least time (the counts are
+//! the first pass's). `--front on` carries the front from step to
 //! step (`MeshParams::carry_front`); `--witness first` stops at the first pair
 //! found within the contact distance (`WitnessSearch::First`; default: the
 //! closest pair), and `--witness-tolerance X` lets the witness be up to `X`
@@ -44,6 +46,8 @@ struct Totals {
     triangle_pairs: u64,
     contacts: usize,
     separated: usize,
+    /// Each query's time, ms.
+    per_query: Vec<f64>,
 }
 
 /// Runs `queries` of `scene` with `params`, timing each.
@@ -58,7 +62,9 @@ fn run_queries(
     for q in scene.queries.iter().skip(skip) {
         let start = Instant::now();
         let (report, stats) = scene.run_with(q, params, mesh);
-        t.ms += start.elapsed().as_secs_f64() * 1e3;
+        let ms = start.elapsed().as_secs_f64() * 1e3;
+        t.ms += ms;
+        t.per_query.push(ms);
         t.queries += 1;
         t.iterations += u64::from(report.iterations);
         t.node_pairs += stats.node_pairs;
@@ -78,6 +84,7 @@ fn main() -> ExitCode {
     let mut mesh = MeshParams::default();
     let mut witness = WitnessSearch::default();
     let mut tolerance = 0.0;
+    let mut passes = 1;
     let mut it = std::env::args().skip(1);
     while let Some(flag) = it.next() {
         let value = it.next().unwrap_or_default();
@@ -90,6 +97,7 @@ fn main() -> ExitCode {
             }
             "--queries" => queries = value.parse().unwrap_or(0),
             "--skip" => skip = value.parse().unwrap_or(0),
+            "--passes" => passes = value.parse().unwrap_or(0),
             "--bound" if value == "nevq" => bound = BoundChoice::Nevq,
             "--bound" if value == "evq" => bound = BoundChoice::Evq,
             "--front" if value == "on" => mesh = mesh.with_carry_front(true),
@@ -102,13 +110,13 @@ fn main() -> ExitCode {
             },
             _ => {
                 eprintln!(
-                    "usage: knots [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq] [--front on|off] [--witness closest|first] [--witness-tolerance X]"
+                    "usage: knots [--sizes 2.8K,11K,34K] [--queries N] [--skip K] [--bound evq|nevq] [--passes P] [--front on|off] [--witness closest|first] [--witness-tolerance X]"
                 );
                 return ExitCode::FAILURE;
             }
         }
     }
-    if queries == 0 || sizes.is_empty() {
+    if queries == 0 || passes == 0 || sizes.is_empty() {
         eprintln!("--queries must be positive and --sizes name 2.8K, 11K or 34K");
         return ExitCode::FAILURE;
     }
@@ -124,10 +132,17 @@ fn main() -> ExitCode {
         for q in scene.queries.iter().take(8) {
             std::hint::black_box(scene.run_with(q, &params, mesh));
         }
-        let t = run_queries(&scene, skip, &params, mesh);
+        let mut t = run_queries(&scene, skip, &params, mesh);
+        // Each query's least time over the passes (the first pass's counts).
+        for _ in 1..passes {
+            let again = run_queries(&scene, skip, &params, mesh);
+            for (m, a) in t.per_query.iter_mut().zip(&again.per_query) {
+                *m = m.min(*a);
+            }
+        }
         let n = t.queries as f64;
         println!(
-            "{:>5}: queries {}, mean ms {:.4}, iterations {:.3}, node pairs {:.1}, triangle pairs {:.1}, contacts {}, separated {}",
+            "{:>5}: queries {}, mean ms {:.4}, iterations {:.3}, node pairs {:.1}, triangle pairs {:.1}, contacts {}, separated {}, per-query min ms {:.4} ({} passes)",
             label(size),
             t.queries,
             t.ms / n,
@@ -135,7 +150,9 @@ fn main() -> ExitCode {
             t.node_pairs as f64 / n,
             t.triangle_pairs as f64 / n,
             t.contacts,
-            t.separated
+            t.separated,
+            t.per_query.iter().sum::<f64>() / n,
+            passes
         );
     }
     ExitCode::SUCCESS
