@@ -481,9 +481,11 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
 
 impl<T: Float> MeshConvexPair<'_, T> {
     /// A mesh node against B (Lemma 12.4): the gap between the node's box
-    /// and B along the line from the box's centre to B's origin and along
-    /// the line to B's point nearest it on that line (or along a plane's
-    /// normal), the larger kept; over the node's ball bound and B's.
+    /// and B along the line from the box's centre to B's origin, along
+    /// the line to B's point nearest it on that line, and, for a core other
+    /// than a point, along the line to the core point nearest the box's
+    /// centre (Lemma 12.11), or along a plane's normal; the largest kept;
+    /// over the node's ball bound and B's.
     fn node_step(
         &mut self,
         pa: &Placed<'_, T>,
