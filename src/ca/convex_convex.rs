@@ -266,7 +266,7 @@ pub(crate) fn advance<T: Float>(
 /// The share of the useful gap that GJK's duality gap may keep when it
 /// stops early for a stepper: `1/32` (`proofs/12-shapes.md`, the lemma
 /// "The closest direction, to the stepper's need").
-const ENOUGH: f64 = 1.0 / 32.0;
+pub(crate) const ENOUGH: f64 = 1.0 / 32.0;
 
 /// GJK's early stop for a stepper whose shapes' radii sum to `r`, as a
 /// rule on `(v . v, v . w)` (see `gjk_closest`): the cores' estimate
@@ -278,7 +278,12 @@ const ENOUGH: f64 = 1.0 / 32.0;
 /// of when to declare contact: the gap along the direction is certified
 /// by the caller (Lemma 12.1).
 pub(crate) fn enough<T: Float>(r: T, params: &CaParams<T>) -> impl Fn(T, T) -> bool {
-    let (cd, clearance) = (params.contact_distance, params.clearance());
+    enough_within(r, params.contact_distance, params.clearance())
+}
+
+/// [`enough`] with the contact distance `cd` and the clearance given
+/// apart (a mesh node's direction, `MeshConvexPair`, Lemma 12.12).
+pub(crate) fn enough_within<T: Float>(r: T, cd: T, clearance: T) -> impl Fn(T, T) -> bool {
     let kappa = T::from_f64(ENOUGH);
     move |vv: T, vw: T| {
         let d = vv.sqrt();
@@ -294,7 +299,7 @@ pub(crate) fn gjk_tolerance<T: Float>() -> T {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     //! The early stop's two promises (`proofs/12-shapes.md`, the lemma "The
     //! closest direction, to the stepper's need"), for a curved core placed
     //! at a random rotation near an axis-aligned box, in `f32` and `f64`,
@@ -415,7 +420,7 @@ mod tests {
     /// `p`: in the half-plane `(r, y)` of `p`'s radial distance, the
     /// rectangle `[0, rho] x [-h, h]` or the triangle `(0, -h)`, `(rho,
     /// -h)`, `(0, h)`, revolved back.
-    fn project_core(cone: bool, h: f64, rho: f64, p: [f64; 3]) -> [f64; 3] {
+    pub(crate) fn project_core(cone: bool, h: f64, rho: f64, p: [f64; 3]) -> [f64; 3] {
         let r = (p[0] * p[0] + p[2] * p[2]).sqrt();
         let (r2, y2) = if !cone {
             (r.min(rho), p[1].clamp(-h, h))

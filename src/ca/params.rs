@@ -187,10 +187,10 @@ impl<T: Float> CaParams<T> {
     /// cores). Exact copies share one leaf and cost nothing. A triangle pair
     /// against a curved convex shape (a cylinder, a cone: GJK) costs up to
     /// about 3.5 us, so 10,000 of them about 35 ms. Fast spins against a
-    /// mesh need more: a convex shape and the bunny each turning 200 rad
-    /// over the interval take up to about 25,000 triangle pairs, and one
-    /// such query in five ends in `WorkLimit` (`examples/fast_spins.rs`;
-    /// `docs/performance.md`, "fast spins").
+    /// mesh fit: a convex shape and the bunny each turning 200 rad over the
+    /// interval take at most about 1,100 triangle pairs and 11,000 node
+    /// pairs (`examples/fast_spins.rs`; `docs/performance.md`, "fast
+    /// spins against a mesh").
     pub const DEFAULT_WORK_BUDGET: Work = Work::new(50_000, 10_000);
 
     /// With another work budget ([`Work::UNLIMITED`] for none).
