@@ -181,7 +181,11 @@ fn collider_motion(
     c: &rapier3d_f64::geometry::Collider,
 ) -> NonlinearRigidMotion {
     match body {
-        Some(m) => c.position_wrt_parent().map_or(*m, |p| m.prepend(*p)),
+        // A collider at its body's frame moves by the body's motion itself.
+        Some(m) => match c.position_wrt_parent() {
+            Some(p) if *p != Pose::IDENTITY => m.prepend(*p),
+            _ => *m,
+        },
         None => NonlinearRigidMotion::constant_position(*c.position()),
     }
 }
@@ -274,6 +278,16 @@ impl CertifiedPass {
             let b = bodies.get(*h)?;
             let end = b.position();
             let com = b.local_center_of_mass();
+            if end == start {
+                // Not moved (a fixed body, or one the step left in place):
+                // the still motion, exactly (no rotation's rounding).
+                return Some(NonlinearRigidMotion::new(
+                    *start,
+                    com,
+                    Vector::ZERO,
+                    Vector::ZERO,
+                ));
+            }
             let linvel = (*end * com - *start * com) / dt;
             let turn = end.rotation * start.rotation.inverse();
             let angvel = turn.to_scaled_axis() / dt;
@@ -289,23 +303,51 @@ impl CertifiedPass {
             }
             self.index[slot] = Some((generation, k));
         }
-        // The swept box of a collider's motion: its start and end boxes
-        // merged, grown by how far the rotation can carry a point off the
-        // segment between them (`|w| dt` times its reach, at most twice the
-        // reach), and by the contact distance.
+        // The swept box of a collider's motion, loosened by the contact
+        // distance. A still collider: its box. Otherwise every point `x` of
+        // it is at `x0 + v t + (R(w t) - I)(x0 - c0)` at time `t` (`c0` its
+        // motion's centre, `|x0 - c0| <= radius`), within `min(|w| t, 2)
+        // radius` of `x0 + v t`, and within `radius` of the centre `c0 + v t`:
+        // its swept set is in the box of the ball of that radius along the
+        // centre's segment, and in its start box merged with that box moved
+        // by `v dt`, grown by `min(|w| dt, 2) radius`. The pass takes the
+        // intersection of the two, or the ball's box alone for a collider
+        // turning by a radian or more (then within the other when its start
+        // box holds its centre; no box of the shape computed: a cylinder's
+        // costs as much as the rest of the pass's step).
         let swept = |m: &NonlinearRigidMotion,
                      s: &dyn parry3d_f64::shape::Shape,
-                     r: &parry3d_f64::bounding_volume::BoundingSphere| {
-            let reach = r.center.length() + r.radius + m.local_center.length();
+                     centre: parry3d_f64::math::Vector,
+                     radius: f64| {
+            use parry3d_f64::bounding_volume::Aabb;
             // `position_at_time(0)` is `start`; a still motion stays there.
-            let a = s.compute_aabb(&m.start);
-            let still = m.linvel == Vector::ZERO && m.angvel == Vector::ZERO;
-            if still {
-                return a.loosened(contact_distance);
+            if m.linvel == Vector::ZERO && m.angvel == Vector::ZERO {
+                return s.compute_aabb(&m.start).loosened(contact_distance);
             }
-            let b = s.compute_aabb(&m.position_at_time(dt));
-            let grow = (m.angvel.length() * dt).min(2.0) * reach;
-            a.merged(&b).loosened(grow + contact_distance)
+            let travel = m.linvel * dt;
+            let end = centre + travel;
+            // The rounding of `centre`, `end`, `radius`, the turn and the
+            // start box's moved corners (a few operations, relative `2^-53`
+            // each, on numbers at most `scale`) is far below `1e-9` of the
+            // scale, as in `apart_over`.
+            let scale = centre.abs().max_element() + travel.abs().max_element() + radius;
+            let pad = contact_distance + 1e-9 * scale;
+            let ball = Aabb::new(
+                centre.min(end) - Vector::splat(radius + pad),
+                centre.max(end) + Vector::splat(radius + pad),
+            );
+            let turn = (m.angvel.length() * dt).min(2.0);
+            if turn >= 1.0 {
+                return ball;
+            }
+            let a = s.compute_aabb(&m.start);
+            let grow = Vector::splat(turn * radius + pad);
+            let moved = Aabb::new(
+                a.mins.min(a.mins + travel) - grow,
+                a.maxs.max(a.maxs + travel) + grow,
+            );
+            // Both hold the swept set, so they meet; NaN: the ball's box.
+            moved.intersection(&ball).unwrap_or(ball)
         };
         // Every collider's motion and swept box, once per step: its body's
         // index (`None` without a body; colliders of bodies not recorded are
@@ -324,13 +366,14 @@ impl CertifiedPass {
             };
             let m = collider_motion(j.and_then(|j| motions[j].as_ref()), c);
             let ball = c.shape().compute_local_bounding_sphere();
-            let b = swept(&m, c.shape(), &ball);
             // Every point of the collider stays within `radius` of its
             // motion's centre, which moves on a straight line.
             let radius = (ball.center - m.local_center).length() + ball.radius;
+            let centre = m.start * m.local_center;
+            let b = swept(&m, c.shape(), centre, radius);
             self.placed.push(Placed {
                 body: j,
-                centre: m.start * m.local_center,
+                centre,
                 velocity: m.linvel,
                 radius,
                 motion: m,
