@@ -749,7 +749,7 @@ pub(crate) fn slide(mode: Mode, spin: f64) -> f64 {
 
 fn main() {
     let mut args = Args::from_env(
-        "rapier_worlds [--launches 20] [--steps 150] [--world NAME] [--rounds 1] [--verbose] [--swept]",
+        "rapier_worlds [--launches 20] [--steps 150] [--world NAME] [--rounds 1] [--verbose] [--swept] [--only default|ours]",
     );
     let launches: u64 = args.value_or("--launches", 20);
     let steps: usize = args.value_or("--steps", STEPS);
@@ -757,6 +757,7 @@ fn main() {
     let with_swept = args.flag("--swept");
     let only: Option<String> = args.value("--world");
     let rounds: usize = args.value_or("--rounds", 1);
+    let only_mode: Option<String> = args.value("--only");
     args.finish();
     println!(
         "{launches} launches x {steps} steps per world, dt 1/60, gravity off, CCD on, TOL {TOL}"
@@ -765,6 +766,28 @@ fn main() {
         .into_iter()
         .filter(|w| only.as_deref().is_none_or(|o| o == w.name()))
         .collect();
+    // `--only MODE`: that setup alone, unchecked, one round (for a profiler).
+    if let Some(m) = only_mode {
+        let mode = match m.as_str() {
+            "default" => Mode::Default,
+            "ours" => Mode::Ours,
+            _ => {
+                eprintln!("--only takes default or ours");
+                std::process::exit(2);
+            }
+        };
+        for &world in &worlds {
+            let t = run_world(world, mode, launches, steps, false, false);
+            println!(
+                "{} {m}: ms per step {:.4}, pass casts {}, dispatcher certified casts {}",
+                world.name(),
+                t.ms_per_step(),
+                t.pass_casts,
+                t.stats.certified
+            );
+        }
+        return;
+    }
     let mut stats = Vec::new();
     for &world in &worlds {
         let d = run_world(world, Mode::Default, launches, steps, true, verbose);

@@ -125,6 +125,19 @@ pub struct CertifiedPass {
     motions: Vec<Option<NonlinearRigidMotion>>,
     /// Scratch kept between steps: the hits `(body, other body, time)`.
     hits: Vec<(usize, Option<usize>, f64)>,
+    /// Scratch kept between steps: the pair scan's view of `placed`.
+    scan: Vec<Scan>,
+}
+
+/// A collider as the pair scan reads it (compact: the scan reads every
+/// pair's).
+#[derive(Clone, Copy, Debug)]
+struct Scan {
+    swept: parry3d_f64::bounding_volume::Aabb,
+    /// Its body's index in [`CertifiedPass::before`], `usize::MAX` for none.
+    body: usize,
+    /// A swept body's collider with a motion.
+    ccd: bool,
 }
 
 /// A collider's motion over the step and its swept box, with its body's
@@ -181,9 +194,68 @@ fn collider_motion(
     c: &rapier3d_f64::geometry::Collider,
 ) -> NonlinearRigidMotion {
     match body {
-        Some(m) => c.position_wrt_parent().map_or(*m, |p| m.prepend(*p)),
+        // A collider at its body's frame moves by the body's motion itself.
+        Some(m) => match c.position_wrt_parent() {
+            Some(p) if *p != Pose::IDENTITY => m.prepend(*p),
+            _ => *m,
+        },
         None => NonlinearRigidMotion::constant_position(*c.position()),
     }
+}
+
+/// The box of the points a collider moving by `m` over `[0, dt]` passes
+/// through, loosened by `reach` (`proofs/12-shapes.md`, Lemma 12.13);
+/// `centre` is the motion's centre at the start (`m.start * m.local_center`,
+/// which moves on a straight line at `m.linvel`) and every point of the
+/// collider is within `radius` of it.
+///
+/// A still collider: its box. Otherwise a point `x0` at the start is at
+/// `x0 + v t + (R(w t) - I)(x0 - c0)` at time `t`, within `min(|w| t, 2)
+/// radius` of `x0 + v t` and within `radius` of the centre `c0 + v t`: the
+/// swept set is in the box of the ball of that radius along the centre's
+/// segment, and in the start box merged with itself moved by `v dt`, grown
+/// by `min(|w| dt, 2) radius`. The intersection of the two, or the ball's
+/// box alone for a collider turning by a radian or more (then within the
+/// other when the start box holds the centre), so that no box of the shape
+/// is computed where it would not help (a cylinder's costs as much as the
+/// rest of the pass's step).
+fn swept_box(
+    m: &NonlinearRigidMotion,
+    s: &dyn parry3d_f64::shape::Shape,
+    centre: parry3d_f64::math::Vector,
+    radius: f64,
+    dt: f64,
+    reach: f64,
+) -> parry3d_f64::bounding_volume::Aabb {
+    use parry3d_f64::bounding_volume::Aabb;
+    // `position_at_time(0)` is `start`; a still motion stays there.
+    if m.linvel == Vector::ZERO && m.angvel == Vector::ZERO {
+        return s.compute_aabb(&m.start).loosened(reach);
+    }
+    let travel = m.linvel * dt;
+    let end = centre + travel;
+    // The rounding of `centre`, `end`, `radius`, the turn and the start
+    // box's moved corners (a few operations, relative `2^-53` each, on
+    // numbers at most twice `scale`) is far below `1e-9` of the scale, as in
+    // `Placed::apart_over`.
+    let scale = centre.abs().max_element() + travel.abs().max_element() + radius;
+    let pad = reach + 1e-9 * scale;
+    let ball = Aabb::new(
+        centre.min(end) - Vector::splat(radius + pad),
+        centre.max(end) + Vector::splat(radius + pad),
+    );
+    let turn = (m.angvel.length() * dt).min(2.0);
+    if turn >= 1.0 {
+        return ball;
+    }
+    let a = s.compute_aabb(&m.start);
+    let grow = Vector::splat(turn * radius + pad);
+    let moved = Aabb::new(
+        a.mins.min(a.mins + travel) - grow,
+        a.maxs.max(a.maxs + travel) + grow,
+    );
+    // Both hold the swept set, so they meet; NaN: the ball's box.
+    moved.intersection(&ball).unwrap_or(ball)
 }
 
 impl CertifiedPass {
@@ -197,6 +269,7 @@ impl CertifiedPass {
             placed: Vec::new(),
             motions: Vec::new(),
             hits: Vec::new(),
+            scan: Vec::new(),
         }
     }
 
@@ -274,6 +347,16 @@ impl CertifiedPass {
             let b = bodies.get(*h)?;
             let end = b.position();
             let com = b.local_center_of_mass();
+            if end == start {
+                // Not moved (a fixed body, or one the step left in place):
+                // the still motion, exactly (no rotation's rounding).
+                return Some(NonlinearRigidMotion::new(
+                    *start,
+                    com,
+                    Vector::ZERO,
+                    Vector::ZERO,
+                ));
+            }
             let linvel = (*end * com - *start * com) / dt;
             let turn = end.rotation * start.rotation.inverse();
             let angvel = turn.to_scaled_axis() / dt;
@@ -289,24 +372,6 @@ impl CertifiedPass {
             }
             self.index[slot] = Some((generation, k));
         }
-        // The swept box of a collider's motion: its start and end boxes
-        // merged, grown by how far the rotation can carry a point off the
-        // segment between them (`|w| dt` times its reach, at most twice the
-        // reach), and by the contact distance.
-        let swept = |m: &NonlinearRigidMotion,
-                     s: &dyn parry3d_f64::shape::Shape,
-                     r: &parry3d_f64::bounding_volume::BoundingSphere| {
-            let reach = r.center.length() + r.radius + m.local_center.length();
-            // `position_at_time(0)` is `start`; a still motion stays there.
-            let a = s.compute_aabb(&m.start);
-            let still = m.linvel == Vector::ZERO && m.angvel == Vector::ZERO;
-            if still {
-                return a.loosened(contact_distance);
-            }
-            let b = s.compute_aabb(&m.position_at_time(dt));
-            let grow = (m.angvel.length() * dt).min(2.0) * reach;
-            a.merged(&b).loosened(grow + contact_distance)
-        };
         // Every collider's motion and swept box, once per step: its body's
         // index (`None` without a body; colliders of bodies not recorded are
         // left out).
@@ -324,13 +389,14 @@ impl CertifiedPass {
             };
             let m = collider_motion(j.and_then(|j| motions[j].as_ref()), c);
             let ball = c.shape().compute_local_bounding_sphere();
-            let b = swept(&m, c.shape(), &ball);
             // Every point of the collider stays within `radius` of its
             // motion's centre, which moves on a straight line.
             let radius = (ball.center - m.local_center).length() + ball.radius;
+            let centre = m.start * m.local_center;
+            let b = swept_box(&m, c.shape(), centre, radius, dt, contact_distance);
             self.placed.push(Placed {
                 body: j,
-                centre: m.start * m.local_center,
+                centre,
                 velocity: m.linvel,
                 radius,
                 motion: m,
@@ -340,23 +406,32 @@ impl CertifiedPass {
         }
         let mut hits = core::mem::take(&mut self.hits);
         hits.clear();
-        for (a, pa) in self.placed.iter().enumerate() {
-            // A swept body's collider (one with a motion).
-            let Some(i) = pa.body else { continue };
-            if !self.before[i].2 || motions[i].is_none() {
+        // The scan's compact view of `placed`: each swept box, its body
+        // (`usize::MAX` for none) and whether it is a swept body's collider
+        // (one with a motion).
+        let mut scan = core::mem::take(&mut self.scan);
+        scan.clear();
+        scan.extend(self.placed.iter().map(|p| {
+            Scan {
+                swept: p.swept,
+                body: p.body.unwrap_or(usize::MAX),
+                ccd: p
+                    .body
+                    .is_some_and(|i| self.before[i].2 && motions[i].is_some()),
+            }
+        }));
+        for (a, sa) in scan.iter().enumerate() {
+            if !sa.ccd {
                 continue;
             }
-            for (b, pb) in self.placed.iter().enumerate() {
+            let (pa, i) = (&self.placed[a], sa.body);
+            for (b, sb) in scan.iter().enumerate() {
                 // Another body's collider (a swept one once per pair), or a
-                // collider without a body.
-                match pb.body {
-                    Some(j) if j == i => continue,
-                    Some(j) if self.before[j].2 && motions[j].is_some() && b < a => continue,
-                    _ => {}
-                }
-                if !pa.swept.intersects(&pb.swept) {
+                // collider without a body, whose swept box meets this one's.
+                if sb.body == i || (sb.ccd && b < a) || !sa.swept.intersects(&sb.swept) {
                     continue;
                 }
+                let pb = &self.placed[b];
                 if pa.apart_over(pb, dt, contact_distance) {
                     stats.apart += 1;
                     continue;
@@ -432,6 +507,7 @@ impl CertifiedPass {
                 }
             }
         }
+        self.scan = scan;
         if !hits.is_empty() {
             self.stop_groups(bodies, colliders, &motions, &hits, &mut stats, dt);
         }
@@ -586,11 +662,77 @@ impl CertifiedPass {
 
 #[cfg(test)]
 mod tests {
-    use super::Placed;
+    use super::{swept_box, Placed};
     use motion_bound_devkit::Rng;
-    use parry3d_f64::math::{Pose, Vector};
+    use parry3d_f64::bounding_volume::{Aabb, BoundingVolume};
+    use parry3d_f64::math::{Pose, Rotation, Vector};
     use parry3d_f64::query::NonlinearRigidMotion;
+    use parry3d_f64::shape::SharedShape;
     use rapier3d_f64::geometry::ColliderHandle;
+
+    /// Against dense sampling of the motion (parry's own
+    /// `position_at_time`, the shape's box at 4,097 times): every sampled
+    /// box lies in the swept box, and the swept box is no larger than the
+    /// sampled ones' union grown by the twice the radius and the margins
+    /// (so that a box of everything would fail). Shapes whose motion's
+    /// centre lies off them (a local centre up to 0.5 away, as a compound's
+    /// part has), turns of 0 to 3 radians a step (both ways of the box), and
+    /// still shapes.
+    #[test]
+    fn swept_boxes_hold_every_sampled_pose_and_are_tight() {
+        let mut r = Rng::new(55);
+        let dt = 1.0 / 60.0;
+        let reach = 1e-4;
+        const N: usize = 4096;
+        let shapes = [
+            SharedShape::cuboid(1.0, 0.02, 0.3),
+            SharedShape::cylinder(0.3, 0.05),
+            SharedShape::cone(0.3, 0.08),
+            SharedShape::capsule_y(0.2, 0.05),
+            SharedShape::ball(0.05),
+            SharedShape::cuboid(0.005, 4.0, 4.0),
+        ];
+        let v = |r: &mut Rng, s: f64| Vector::new(r.range(-s, s), r.range(-s, s), r.range(-s, s));
+        let (mut turned, mut ball_only) = (0, 0);
+        for case in 0..3000 {
+            let shape = &shapes[case % shapes.len()];
+            let axis = v(&mut r, 1.0).normalize_or(Vector::X);
+            let start = Pose::from_parts(
+                v(&mut r, 10.0),
+                Rotation::from_axis_angle(axis, r.range(0.0, 3.0)),
+            );
+            let (linvel, angvel) = if case % 7 == 0 {
+                (Vector::ZERO, Vector::ZERO)
+            } else {
+                let w = v(&mut r, 1.0).normalize_or(Vector::Y) * r.range(0.0, 3.0) / dt;
+                (v(&mut r, 200.0), w)
+            };
+            let m = NonlinearRigidMotion::new(start, v(&mut r, 0.5), linvel, angvel);
+            let ball = shape.compute_local_bounding_sphere();
+            let radius = (ball.center - m.local_center).length() + ball.radius;
+            let centre = m.start * m.local_center;
+            let boxed = swept_box(&m, shape.as_ref(), centre, radius, dt, reach);
+            let mut union = Aabb::new_invalid();
+            for k in 0..=N {
+                let t = dt * k as f64 / N as f64;
+                let a = shape.compute_aabb(&m.position_at_time(t));
+                assert!(
+                    boxed.contains(&a),
+                    "case {case}: the pose at {t} ({a:?}) is outside {boxed:?}"
+                );
+                union.merge(&a);
+            }
+            let turn = angvel.length() * dt;
+            turned += usize::from(turn > 0.0 && turn < 1.0);
+            ball_only += usize::from(turn >= 1.0);
+            let loose = union.loosened(2.0 * radius + 2.0 * reach + 1e-6);
+            assert!(
+                loose.contains(&boxed),
+                "case {case}: {boxed:?} is more than twice the radius {radius} off the sampled {union:?}"
+            );
+        }
+        assert!(turned > 500 && ball_only > 500, "{turned} {ball_only}");
+    }
 
     fn placed(r: &mut Rng) -> Placed {
         let v = |r: &mut Rng, s: f64| Vector::new(r.range(-s, s), r.range(-s, s), r.range(-s, s));
