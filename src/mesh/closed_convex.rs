@@ -72,7 +72,6 @@ pub(crate) fn closed_convex_vertices<T: Float>(
 #[cfg(test)]
 mod tests {
     use super::closed_convex_vertices;
-    use alloc::vec;
     use alloc::vec::Vec;
 
     fn cube() -> (Vec<[f64; 3]>, Vec<[u32; 3]>) {

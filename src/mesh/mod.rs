@@ -19,6 +19,7 @@ pub(crate) use closed_convex::closed_convex_vertices;
 /// coordinate `k` at `+h[k]` when bit `k` of `i` is set (else `-h[k]`), two
 /// a face, counter-clockwise seen from outside: the box of a URDF `<box>`
 /// and of the crate's own tests.
+#[cfg(any(test, feature = "urdf"))]
 pub(crate) const BOX_TRIANGLES: [[u32; 3]; 12] = [
     [0, 2, 1],
     [1, 2, 3],
