@@ -241,6 +241,35 @@ struct Side<'s, 'a, T> {
     motion: &'s PreparedMotion<T>,
 }
 
+impl<'s, 'a, T: Float> Side<'s, 'a, T> {
+    /// B's side at `t`: `shape` placed by `motion`, its placement error, and
+    /// the reach its support needs; with it B's reach over the rest of the
+    /// interval (`placement_error`'s second value).
+    fn at(
+        shape: &'s Convex<'a, T>,
+        motion: &'s PreparedMotion<T>,
+        t: T,
+        fixed: Option<Direction<T>>,
+    ) -> (Self, T) {
+        let pose = motion.motion().pose_at(t);
+        let (err, reach) = placement_error(motion.motion(), t, shape.reach());
+        let weight = T::from_u32(8)
+            * sum_up(
+                sum_up(pose.translation.norm_l1(), shape.weight()),
+                shape.radius(),
+            );
+        let side = Side {
+            shape,
+            pose,
+            err,
+            weight,
+            fixed,
+            motion,
+        };
+        (side, reach)
+    }
+}
+
 impl<T: Float> Side<'_, '_, T> {
     /// The least of `x . n` over B's exact points, as computed.
     fn lower(&self, n: Vec3<T>) -> T {
@@ -298,24 +327,10 @@ impl<T: Float> CaStep<T> for MeshConvexPair<'_, T> {
             Other::Plane(h) => (point, Some(-h.normal())),
         };
         let pa = Placed::new(self.mesh, a, t);
-        let pose = b.motion().pose_at(t);
-        let (err, reach_b) = placement_error(b.motion(), t, shape.reach());
-        let weight = T::from_u32(8)
-            * sum_up(
-                sum_up(pose.translation.norm_l1(), shape.weight()),
-                shape.radius(),
-            );
-        let side = Side {
-            shape: &shape,
-            pose,
-            err,
-            weight,
-            fixed,
-            motion: b,
-        };
+        let (side, reach_b) = Side::at(&shape, b, t, fixed);
         let mut best = diff_up(b.motion().interval().end(), t);
         let (cd, clear) = (params.contact_distance, params.clearance());
-        let resolution = resolution_up(pa.err, err, pa.reach + reach_b);
+        let resolution = resolution_up(pa.err, side.err, pa.reach + reach_b);
         let limited = resolution >= clear || resolution.is_nan();
         if self.mesh.reach < least_resolved_reach::<T>() {
             return StepResult::PrecisionLimit {
@@ -707,21 +722,7 @@ impl<T: Float> MeshConvexPair<'_, T> {
             return Vec::new();
         };
         let pa = Placed::new(self.mesh, a, t);
-        let pose = b.motion().pose_at(t);
-        let (err, _) = placement_error(b.motion(), t, shape.reach());
-        let weight = T::from_u32(8)
-            * sum_up(
-                sum_up(pose.translation.norm_l1(), shape.weight()),
-                shape.radius(),
-            );
-        let side = Side {
-            shape: &shape,
-            pose,
-            err,
-            weight,
-            fixed: None,
-            motion: b,
-        };
+        let (side, _) = Side::at(&shape, b, t, None);
         let kind = BoundKind::Evq;
         (0..self.mesh.nodes.len() as u32)
             .map(|i| {
