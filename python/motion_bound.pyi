@@ -281,6 +281,23 @@ def time_of_impact_batch(
     about 20 ms; between them, `progress(done, total)` is called (if given) and
     Ctrl-C raises `KeyboardInterrupt`."""
 
+def past_contact(
+    a: Body,
+    motion_a: Motion,
+    b: Body,
+    motion_b: Motion,
+    normal: ArrayLike,
+    contact_distance: float = 1e-4,
+    tolerance: float = 1e-9,
+    max_iterations: int = 100,
+) -> Tuple[Literal["never", "at", "undecided"], Optional[float]]:
+    """For bodies within the contact distance at the start: whether `a` goes
+    deeper into `b` along `normal` (from A to B) over the interval, certified
+    with one cast against the plane just past the start's separating plane.
+    `("never", None)`, `("at", t)` (from `t` on; `0.0` when already deeper
+    than the contact distance) or `("undecided", None)` (both rotate, or a
+    half-space). The GIL released."""
+
 class Scene:
     """Many bodies over [0, duration]; every pair's first contact after a
     certified broad phase. Pickles (bodies, motions, the last `stats`); no

@@ -1,8 +1,9 @@
-//! Pair queries: `time_of_impact` and its batch form, with the GIL released
-//! while they run.
+//! Pair queries: `time_of_impact` and its batch form, and `past_contact`
+//! for a pair touching at the start, with the GIL released while they run.
 
 use motion_bound::ca::{
-    time_of_impact as toi, AnyPair, CaOutcome, CaParams, CaReport, MeshWorkspace,
+    past_contact as past, time_of_impact as toi, AnyPair, CaOutcome, CaParams, CaReport,
+    MeshWorkspace, PastContact,
 };
 use motion_bound::RigidMotion;
 use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
@@ -424,6 +425,63 @@ fn time_of_impact(
     Ok(Report { flat })
 }
 
+/// For bodies within the contact distance at the start of their motions'
+/// interval (`time_of_impact` answered "initial_contact"): whether body `a`
+/// goes deeper into body `b` along `normal` (the report's `normal`, from A to
+/// B; any nonzero vector is sound) over the interval, certified, with one
+/// cast against the half-space just past the plane that separates them at
+/// the start, carried along by B's translation (`proofs/12-shapes.md`,
+/// Lemma 12.11). Until the answer's time, A's extent along `normal` beyond
+/// B's least grows by less than `contact_distance`: a body sliding along a
+/// surface it rests on costs one cheap cast instead of a full query with a
+/// smaller contact distance. B must not rotate, or A must not (the roles
+/// then swap).
+///
+/// Returns `(outcome, time)`: `("never", None)` (certified: A slides along
+/// B or leaves it), `("at", t)` (it may from `t` on, never later than the
+/// first time it does; `0.0` when A already reaches more than the contact
+/// distance past B along `normal`), or `("undecided", None)` (both bodies
+/// rotate, a body is a half-space, or a value overflowed: ask
+/// `time_of_impact` again with a smaller contact distance, or hold the
+/// body). The GIL is released while it runs.
+///
+/// Raises `InputError` for a zero or non-finite `normal`, `QueryError` for
+/// parameters out of range or motions over different intervals.
+#[pyfunction]
+#[pyo3(
+    signature = (a, motion_a, b, motion_b, normal, contact_distance = 1e-4, tolerance = 1e-9, max_iterations = Iterations::DEFAULT),
+    text_signature = "(a, motion_a, b, motion_b, normal, contact_distance=1e-4, tolerance=1e-9, max_iterations=100)"
+)]
+#[allow(clippy::too_many_arguments)]
+fn past_contact(
+    py: Python<'_>,
+    a: &Bound<'_, Body>,
+    motion_a: &Bound<'_, Motion>,
+    b: &Bound<'_, Body>,
+    motion_b: &Bound<'_, Motion>,
+    normal: &Bound<'_, PyAny>,
+    contact_distance: f64,
+    tolerance: f64,
+    max_iterations: Iterations,
+) -> PyResult<(&'static str, Option<f64>)> {
+    let p = params(contact_distance, tolerance, max_iterations)?;
+    let n = motion_bound::Vec3::from_array(crate::arrays::vec3(normal, "normal")?);
+    let (ba, bb) = (a.get(), b.get());
+    let (ma, mb) = (motion_a.get().motion, motion_b.get().motion);
+    let answer = py.detach(|| -> PyResult<PastContact<f64>> {
+        let (pa, pb) = (ba.prepare()?, bb.prepare()?);
+        past(pa.shape(), &ma, pb.shape(), &mb, n, &p).map_err(|e| match e {
+            motion_bound::ca::CaError::Input(e) => crate::errors::input_in("normal")(e),
+            e => pair_error(e, (ba.kind_name(), bb.kind_name())),
+        })
+    })?;
+    Ok(match answer {
+        PastContact::Never => ("never", None),
+        PastContact::At(t) => ("at", Some(t)),
+        _ => ("undecided", None),
+    })
+}
+
 /// Motions for a batch: one for every query, or one shared.
 enum Many<'a> {
     One(&'a RigidMotion<f64>),
@@ -758,5 +816,6 @@ pub(crate) fn register(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<BatchReport>()?;
     m.add_function(wrap_pyfunction!(time_of_impact, m)?)?;
     m.add_function(wrap_pyfunction!(time_of_impact_batch, m)?)?;
+    m.add_function(wrap_pyfunction!(past_contact, m)?)?;
     Ok(())
 }
