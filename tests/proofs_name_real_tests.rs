@@ -3,10 +3,11 @@
 //! at nothing.
 //!
 //! Read from every `proofs/*.md`, in backticks: file paths (`tests/x.rs`,
-//! `src/.../x.rs`, `fuzz/fuzz_targets/x.rs`) must exist; `file::name` must
-//! name a function in that file; other paths (`module::tests::name`) and bare
-//! snake-case names of at least four words must name a function, module or
-//! file of the repository. `{a,b}` alternatives are expanded.
+//! `src/.../x.rs`, `fuzz/fuzz_targets/x.rs`, `python/tests/x.py`) must exist;
+//! `file::name` must name a function in that file; other paths
+//! (`module::tests::name`) and bare snake-case names of at least four words
+//! must name a function (Rust's `fn` or Python's `def`), module or file of
+//! the repository. `{a,b}` alternatives are expanded.
 
 use std::collections::BTreeSet;
 use std::fs;
@@ -16,7 +17,8 @@ fn root() -> PathBuf {
     PathBuf::from(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
 }
 
-/// Every `.rs` file of the repository's own code (not build output).
+/// Every `.rs` and `.py` file of the repository's own code (not build
+/// output).
 fn sources() -> Vec<PathBuf> {
     fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
         let Ok(entries) = fs::read_dir(dir) else {
@@ -29,7 +31,7 @@ fn sources() -> Vec<PathBuf> {
                 if name != "target" && name != "corpus" && !name.starts_with('.') {
                     walk(&p, out);
                 }
-            } else if name.ends_with(".rs") {
+            } else if name.ends_with(".rs") || name.ends_with(".py") {
                 out.push(p);
             }
         }
@@ -44,6 +46,7 @@ fn sources() -> Vec<PathBuf> {
         "compare",
         "ci-nostd",
         "motion-bound-parry",
+        "python",
     ] {
         walk(&root().join(d), &mut out);
     }
@@ -59,6 +62,24 @@ fn expand(s: &str) -> Vec<String> {
             .collect(),
         _ => vec![s.to_owned()],
     }
+}
+
+/// `tests/x.rs::name` -> (`tests/x.rs`, `name`): a Rust or Python file's
+/// path, ended by `.rs` or `.py` and then nothing or `::`; no file
+/// otherwise (`python/motion_bound.pyi` is not a `.py` file).
+fn split_file(item: &str) -> (Option<&str>, &str) {
+    for ext in [".rs", ".py"] {
+        let mut from = 0;
+        while let Some(i) = item[from..].find(ext).map(|i| i + from) {
+            let end = i + ext.len();
+            let rest = &item[end..];
+            if rest.is_empty() || rest.starts_with("::") {
+                return (Some(&item[..end]), rest.trim_start_matches("::"));
+            }
+            from = end;
+        }
+    }
+    (None, item)
 }
 
 fn is_snake(s: &str) -> bool {
@@ -83,6 +104,7 @@ fn every_test_a_proof_names_exists() {
                 t.contains(&format!("fn {name}("))
                     || t.contains(&format!("fn {name}<"))
                     || t.contains(&format!("mod {name}"))
+                    || t.contains(&format!("def {name}("))
             })
     };
     let mut checked = BTreeSet::new();
@@ -103,16 +125,14 @@ fn every_test_a_proof_names_exists() {
             }
             for item in expand(token) {
                 let item = item.trim_end_matches("()").to_owned();
-                let (file, rest) = match item.find(".rs") {
-                    Some(i) => (Some(&item[..i + 3]), item[i + 3..].trim_start_matches("::")),
-                    None => (None, item.as_str()),
-                };
+                let (file, rest) = split_file(&item);
                 if let Some(file) = file {
                     if !(file.starts_with("tests/")
                         || file.starts_with("src/")
                         || file.starts_with("fuzz/")
                         || file.starts_with("examples/")
-                        || file.starts_with("motion-bound-parry/"))
+                        || file.starts_with("motion-bound-parry/")
+                        || file.starts_with("python/"))
                     {
                         continue;
                     }
@@ -127,6 +147,7 @@ fn every_test_a_proof_names_exists() {
                         && last != "tests"
                         && !body.contains(&format!("fn {last}("))
                         && !body.contains(&format!("fn {last}<"))
+                        && !body.contains(&format!("def {last}("))
                     {
                         missing.push(format!("{name}: `{item}`: no fn {last} in {file}"));
                     }
@@ -170,4 +191,18 @@ fn braces_expand_to_every_alternative() {
         ["t_f32_a", "t_f32_b", "t_f64_a", "t_f64_b"]
     );
     assert_eq!(expand("plain"), ["plain"]);
+}
+
+#[test]
+fn file_paths_end_at_their_extension() {
+    assert_eq!(split_file("tests/x.rs::a_b"), (Some("tests/x.rs"), "a_b"));
+    assert_eq!(
+        split_file("python/tests/t.py"),
+        (Some("python/tests/t.py"), "")
+    );
+    assert_eq!(
+        split_file("python/motion_bound.pyi"),
+        (None, "python/motion_bound.pyi")
+    );
+    assert_eq!(split_file("ca::past_contact"), (None, "ca::past_contact"));
 }
