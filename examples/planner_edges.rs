@@ -292,7 +292,7 @@ struct Case {
 
 fn main() -> Result<(), Error> {
     let mut args = Args::from_env(
-        "planner_edges [--edges 10000] [--truth 500] [--seed 1] [--obstacles all|primitive|mesh] [--scene S] [--write-edges DIR] [--vamp DIR] [--first-contact]",
+        "planner_edges [--edges 10000] [--truth 500] [--seed 1] [--obstacles all|primitive|mesh] [--scene S] [--write-edges DIR] [--vamp DIR] [--first-contact] [--no-rake]",
     );
     let edges: usize = args.value_or("--edges", 10_000);
     let truth_edges: usize = args.value_or("--truth", 500);
@@ -302,6 +302,7 @@ fn main() -> Result<(), Error> {
     let kinds: String = args.value_or("--obstacles", "all".to_string());
     let first = args.flag("--first-contact");
     let vamp: String = args.value_or("--vamp", String::new());
+    let no_rake = args.flag("--no-rake");
     args.finish();
     let (primitive, mesh) = match kinds.as_str() {
         "all" => (true, true),
@@ -317,7 +318,11 @@ fn main() -> Result<(), Error> {
         cpu_name()
     );
     let mut base = arm.clone();
-    base.set_params(ChainParams::default().with_within_limits(true))?;
+    base.set_params(
+        ChainParams::default()
+            .with_within_limits(true)
+            .with_rake(!no_rake),
+    )?;
     restrict(&mut base);
     let obstacles = std::env::var_os("PE_NOSHAPES").is_none();
     let mut cases = Vec::new();
@@ -431,6 +436,8 @@ fn run(case: &Case, limits: &[[f64; 2]], opt: Options<'_>) -> Result<(), Error> 
     }
     let mut times = Vec::with_capacity(edges);
     let (mut colliding, mut undecided, mut tests, mut intervals) = (0, 0, 0usize, 0usize);
+    let (mut raked, mut lane_tests, mut handed) = (0usize, 0usize, 0usize);
+    let (mut free_time, mut free_count) = (0.0f64, 0usize);
     let mut verdicts = Vec::with_capacity(edges);
     let mut work = Vec::with_capacity(edges);
     let slow: Option<f64> = std::env::var("PE_SLOW")
@@ -446,6 +453,13 @@ fn run(case: &Case, limits: &[[f64; 2]], opt: Options<'_>) -> Result<(), Error> 
         times.push(start.elapsed().as_secs_f64());
         tests += report.stats.tests;
         intervals += report.stats.intervals;
+        raked += report.stats.raked_intervals;
+        lane_tests += report.stats.lane_tests;
+        handed += report.stats.handed;
+        if report.outcome.is_free() {
+            free_time += times[times.len() - 1];
+            free_count += 1;
+        }
         match report.outcome {
             EdgeOutcome::Free => {}
             EdgeOutcome::Undecided { .. } => {
@@ -566,6 +580,14 @@ fn run(case: &Case, limits: &[[f64; 2]], opt: Options<'_>) -> Result<(), Error> 
         tests as f64 / edges as f64,
         intervals as f64 / edges as f64,
         truth_edges.min(edges)
+    );
+    println!(
+        "  rake: {:.1} sub-intervals, {:.0} lane tests, {:.1} handed on per edge; mean us free {:.1}, colliding {:.1}",
+        raked as f64 / edges as f64,
+        lane_tests as f64 / edges as f64,
+        handed as f64 / edges as f64,
+        free_time / free_count.max(1) as f64 * 1e6,
+        (times.iter().sum::<f64>() - free_time) / (edges - free_count).max(1) as f64 * 1e6,
     );
     Ok(())
 }

@@ -79,6 +79,14 @@ pub struct EdgeStats {
     pub leaf_tests: usize,
     /// Time intervals the chain was placed for (forward kinematics).
     pub intervals: usize,
+    /// The rake's sub-intervals (0 when the edge was not raked).
+    pub raked_intervals: usize,
+    /// The rake's lane tests: a ball (or a link's enclosing ball) against a
+    /// proxy or a ball, at eight sub-intervals at once.
+    pub lane_tests: usize,
+    /// The (sub-interval, pair) items the rake handed on to the finer
+    /// engine.
+    pub handed: usize,
 }
 
 impl core::ops::AddAssign for EdgeStats {
@@ -86,6 +94,9 @@ impl core::ops::AddAssign for EdgeStats {
         self.tests += o.tests;
         self.leaf_tests += o.leaf_tests;
         self.intervals += o.intervals;
+        self.raked_intervals += o.raked_intervals;
+        self.lane_tests += o.lane_tests;
+        self.handed += o.handed;
     }
 }
 
@@ -197,8 +208,67 @@ impl<T: Float> Edge<'_, T> {
         let found = if self.first_contact {
             self.by_time(w, slots, [T::ZERO, T::ONE], 0, n)
         } else {
-            self.coarse_first(w, slots, n)
+            w.level.clear();
+            w.level.push(([T::ZERO, T::ONE], 0, n));
+            self.coarse_first_from(w, slots)
         };
+        self.report(found, w)
+    }
+
+    /// Runs the query from the (sub-interval, item) pairs the rake left,
+    /// `fails` sorted by sub-interval (`i` is `[i / times, (i + 1) / times]`,
+    /// `times` a power of two, so every end is dyadic), the items indices
+    /// into `initial`; every other (sub-interval, item) pair is certified
+    /// clear by the rake (Lemma 13.13). Depth first in time for the first
+    /// contact, else every sub-interval's items before any halves.
+    pub(super) fn run_spans(
+        &self,
+        initial: &[Item],
+        fails: &[(u32, u32)],
+        (times, lane_tests): (u32, usize),
+        slots: &[(usize, usize)],
+        w: &mut EdgeWork<T>,
+    ) -> EdgeReport<T> {
+        self.prepare(&[], slots, w);
+        w.stats.raked_intervals = times as usize;
+        w.stats.lane_tests = lane_tests;
+        w.stats.handed = fails.len();
+        let scale = T::ONE / T::from_u32(times);
+        let mut level = core::mem::take(&mut w.level);
+        level.clear();
+        let mut i = 0;
+        while i < fails.len() {
+            let lane = fails[i].0;
+            let start = w.items.len();
+            while i < fails.len() && fails[i].0 == lane {
+                w.items.push(initial[fails[i].1 as usize]);
+                i += 1;
+            }
+            let span = [
+                T::from_u32(lane) * scale,
+                T::from_u32(lane + 1) * scale,
+            ];
+            level.push((span, start, w.items.len()));
+        }
+        let found = if self.first_contact {
+            let mut out = Ok(());
+            for &(span, start, end) in &level {
+                out = self.by_time(w, slots, span, start, end);
+                if out.is_err() {
+                    break;
+                }
+            }
+            w.level = level;
+            out
+        } else {
+            w.level = level;
+            self.coarse_first_from(w, slots)
+        };
+        self.report(found, w)
+    }
+
+    /// The report of a query's end.
+    fn report(&self, found: Result<(), (T, Stop<T>)>, w: &EdgeWork<T>) -> EdgeReport<T> {
         let outcome = match found {
             Ok(()) => EdgeOutcome::Free,
             Err((t0, Stop::Contact { at, pair })) => EdgeOutcome::Contact {
@@ -292,16 +362,15 @@ impl<T: Float> Edge<'_, T> {
     /// any shorter one, so that a contact anywhere on the edge is met at the
     /// coarsest sampling that shows it (what a yes-or-no edge check wants).
     /// On a stop, the earliest start of an interval not yet certified.
-    fn coarse_first(
+    /// The intervals of `w.level` first (sorted by time), each with its
+    /// items.
+    fn coarse_first_from(
         &self,
         w: &mut EdgeWork<T>,
         slots: &[(usize, usize)],
-        n: usize,
     ) -> Result<(), (T, Stop<T>)> {
         let mut level = core::mem::take(&mut w.level);
         let mut next = core::mem::take(&mut w.next);
-        level.clear();
-        level.push(([T::ZERO, T::ONE], 0, n));
         let mut result = Ok(());
         'levels: while !level.is_empty() {
             next.clear();

@@ -84,11 +84,16 @@
 mod advance;
 mod bound;
 mod broad;
+mod cover;
 mod edge;
 mod gap;
+mod lanes;
+mod lever;
 mod model;
 mod obstacle;
 mod params;
+mod proxy;
+mod rake;
 mod report;
 mod scene;
 mod segment;

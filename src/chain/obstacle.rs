@@ -9,7 +9,35 @@ use crate::chain::model::{distinct, ChainError};
 use crate::geometry::gjk::ConvexPolytope;
 use crate::geometry::hull_vertices::hull_vertex_indices;
 use crate::rounding::gamma;
-use crate::{BallTree, Float, Pose, TriMesh};
+use crate::chain::proxy::Proxy;
+use crate::{BallTree, Float, Pose, TriMesh, Vec3};
+
+fn orthonormal_row(v: Vec3<f64>) -> [f64; 3] {
+    v.to_array()
+}
+
+/// Gram-Schmidt on three directions (a choice of axes, not a claim: the
+/// proxy certifies its slabs along whatever axes it is given).
+fn orthonormalise(a: [[f64; 3]; 3]) -> [[f64; 3]; 3] {
+    let unit = |v: [f64; 3]| {
+        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        if l > 0.0 && l.is_finite() {
+            v.map(|x| x / l)
+        } else {
+            v
+        }
+    };
+    let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let u0 = unit(a[0]);
+    let p1 = dot(a[1], u0);
+    let u1 = unit([0, 1, 2].map(|k| a[1][k] - p1 * u0[k]));
+    let u2 = [
+        u0[1] * u1[2] - u0[2] * u1[1],
+        u0[2] * u1[0] - u0[0] * u1[2],
+        u0[0] * u1[1] - u0[1] * u1[0],
+    ];
+    [u0, u1, unit(u2)]
+}
 
 /// A still body of the chain's surroundings: a mesh (its ball tree) placed
 /// in the world.
@@ -30,6 +58,9 @@ pub struct Obstacle<T> {
     /// The hull's bound of its vertices' 1-norms (`None`: a vertex GJK
     /// refuses; the query then descends the tree alone).
     pub(super) hull_rho: Option<T>,
+    /// What the rake's `f32` lanes test against: a box holding the mesh
+    /// placed, along its tree's root box's axes (Lemma 13.12).
+    pub(super) proxy: Option<Proxy>,
 }
 
 impl<T: Float> Obstacle<T> {
@@ -65,7 +96,25 @@ impl<T: Float> Obstacle<T> {
         let hull_rho = ConvexPolytope::try_new(&hull, Pose::IDENTITY)
             .ok()
             .map(|p| p.radius_l1());
+        let pose64 = Pose {
+            rotation: pose.rotation.map(|r| r.map(T::to_f64)),
+            translation: Vec3::from_array(pose.translation.to_array().map(T::to_f64)),
+        };
+        let world: Vec<[f64; 3]> = all
+            .iter()
+            .map(|v| pose64.transform_point(Vec3::from_array(v.map(T::to_f64))).to_array())
+            .collect();
+        let axes = tree.whole.nodes[0]
+            .obb
+            .axes
+            .map(|a| orthonormal_row(pose64.transform_vector(Vec3::from_array(a.map(T::to_f64)))));
+        let axes = orthonormalise(axes);
+        // The placed vertices err by the pose's rounding (`delta`, and the
+        // f64 evaluation's few ulps of the reach).
+        let err = delta.to_f64() + 8.0 * f64::EPSILON * reach.to_f64();
+        let proxy = Proxy::holding(&world, axes, err, 0.0);
         Ok(Self {
+            proxy,
             name,
             mesh,
             tree,

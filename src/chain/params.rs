@@ -32,6 +32,12 @@ pub struct ChainParams<T> {
     /// [`EdgeOutcome::Undecided`](crate::chain::EdgeOutcome::Undecided)
     /// (default 250,000: about 40 ms on the Panda's meshes, `docs/performance.md`).
     pub edge_budget: usize,
+    /// Whether the edge queries rake the edge over time first
+    /// (`proofs/13-chains.md`, Lemmas 13.9 to 13.13): the chain placed at up
+    /// to 32 times at once in `f32` lanes, every checked pair's link covers
+    /// tested there, and only what that does not clear handed to the finer
+    /// engine. On by default; the answers are certified either way.
+    pub rake: bool,
 }
 
 impl<T: Float> Default for ChainParams<T> {
@@ -43,6 +49,7 @@ impl<T: Float> Default for ChainParams<T> {
             within_limits: true,
             padding: T::ZERO,
             edge_budget: 250_000,
+            rake: true,
         }
     }
 }
@@ -78,6 +85,13 @@ impl<T: Float> ChainParams<T> {
     }
 
     /// `Ok` when every parameter is in its range.
+    /// [`rake`](Self::rake) on or off.
+    #[must_use]
+    pub fn with_rake(mut self, on: bool) -> Self {
+        self.rake = on;
+        self
+    }
+
     pub(super) fn validate(&self) -> Result<(), ChainError> {
         if !(self.contact_distance > T::ZERO && self.contact_distance.is_finite()) {
             return Err(ChainError::InvalidParameter(

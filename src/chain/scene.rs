@@ -16,6 +16,7 @@ use crate::chain::gap::min_gap;
 use crate::chain::model::{Chain, ChainError};
 use crate::chain::obstacle::Obstacle;
 use crate::chain::params::ChainParams;
+use crate::chain::rake::{Rake, RakeModel, RakeWork};
 use crate::chain::report::{
     ChainContact, ChainPair, ChainStats, PathReport, SegmentOutcome, SegmentReport,
 };
@@ -78,6 +79,8 @@ pub struct ChainScene<T: 'static> {
     /// For each link, the root of its rigid group (links joined by fixed
     /// joints share one).
     group: Vec<usize>,
+    /// The rake's covers, levers and lanes (`rake.rs`), made once.
+    rake: RakeModel,
 }
 
 impl<T: Float> ChainScene<T> {
@@ -94,6 +97,7 @@ impl<T: Float> ChainScene<T> {
             }
         }
         Self {
+            rake: RakeModel::new(&chain),
             chain,
             obstacles: Vec::new(),
             shapes: Vec::new(),
@@ -389,6 +393,7 @@ impl<T: Float> ChainScene<T> {
             hulls,
             obstacle_hulls,
             work: EdgeWork::default(),
+            rake: RakeWork::default(),
         }
     }
 
@@ -641,6 +646,7 @@ pub struct EdgeChecker<'s, T: 'static> {
     /// Each mesh obstacle's convex hull, placed (Lemma 13.8).
     obstacle_hulls: Vec<Option<ConvexPolytope<'s, T>>>,
     work: EdgeWork<T>,
+    rake: RakeWork,
 }
 
 impl<T: Float> EdgeChecker<'_, T> {
@@ -672,6 +678,26 @@ impl<T: Float> EdgeChecker<'_, T> {
             budget: scene.params.edge_budget,
             first_contact,
         };
+        if scene.params.rake && q0 != q1 {
+            let rake = Rake {
+                chain: &scene.chain,
+                model: &scene.rake,
+                shapes: &scene.shapes,
+                obstacles: &scene.obstacles,
+                padding: scene.params.padding.to_f64(),
+                sweep: scene.rake.sweep,
+            };
+            if rake.run(q0, q1, &self.initial, &self.slots, &mut self.rake) {
+                let r = &self.rake;
+                return Ok(edge.run_spans(
+                    &self.initial,
+                    &r.fails,
+                    (r.times, r.tests),
+                    &self.slots,
+                    &mut self.work,
+                ));
+            }
+        }
         Ok(edge.run(&self.initial, &self.slots, &mut self.work))
     }
 

@@ -7,12 +7,18 @@
 
 use alloc::string::String;
 
-use crate::bvh::VertexTree;
+use alloc::vec::Vec;
+
+use crate::bvh::{VertexTree, NO_CHILD};
+use crate::chain::proxy::{convex_proxy, Proxy};
 use crate::ca::{certified_gap_to, PlacedCore};
 use crate::chain::model::ChainError;
 use crate::geometry::closest::point_triangle_vec;
 use crate::rounding::{gamma, gap_down, sum_up};
 use crate::{gjk_distance, Convex, ConvexPolytope, Float, GjkParams, Pose, Vec3, VertexSet};
+
+/// The balls of a point cloud's rake proxy (its tree's top nodes).
+const CLOUD_BALLS: usize = 32;
 
 /// What a [`ShapeObstacle`] is.
 #[derive(Clone, Debug)]
@@ -53,6 +59,9 @@ pub struct ShapeObstacle<T: 'static> {
     /// An upper bound of the placement's rounding (taken as the shape's
     /// own: the pose's numbers are exact by convention, as for meshes).
     pub(super) delta: T,
+    /// What the rake's `f32` lanes test against (Lemma 13.12; `None`: the
+    /// rake leaves it to the edge engine).
+    pub(super) proxy: Option<Proxy>,
 }
 
 impl<T: Float> ShapeObstacle<T> {
@@ -74,11 +83,13 @@ impl<T: Float> ShapeObstacle<T> {
             ));
         }
         let reach = sum_up(pose.translation.length(), shape.reach());
+        let delta = gamma::<T>(8) * reach + T::from_u32(4) * T::ETA_NORMAL;
         Ok(Self {
             name: name.into(),
+            proxy: convex_proxy(&shape, &pose, delta),
             geometry: Geometry::Convex(shape),
             pose,
-            delta: gamma::<T>(8) * reach + T::from_u32(4) * T::ETA_NORMAL,
+            delta,
         })
     }
 
@@ -98,10 +109,16 @@ impl<T: Float> ShapeObstacle<T> {
             .get();
         crate::error::check_components(point, crate::Quantity::Pose).map_err(ChainError::Shape)?;
         let pose = Pose::from_translation(Vec3::from_array(point));
+        let delta = gamma::<T>(8) * pose.translation.length() + T::from_u32(4) * T::ETA_NORMAL;
         Ok(Self {
             name: name.into(),
             geometry: Geometry::HalfSpace(m),
-            delta: gamma::<T>(8) * pose.translation.length() + T::from_u32(4) * T::ETA_NORMAL,
+            proxy: Proxy::plane(
+                m.to_array().map(T::to_f64),
+                point.map(T::to_f64),
+                delta.to_f64(),
+            ),
+            delta,
             pose,
         })
     }
@@ -124,11 +141,40 @@ impl<T: Float> ShapeObstacle<T> {
         let reach = points
             .iter()
             .fold(T::ZERO, |m, p| m.max_nan(Vec3::from_array(*p).norm_l1()));
+        let delta = gamma::<T>(8) * sum_up(reach, radius) + T::from_u32(4) * T::ETA_NORMAL;
+        // The rake's proxy: the tree's top nodes (their balls hold their
+        // points), grown by the points' radius.
+        let nodes = tree.nodes();
+        let mut cut: Vec<usize> = alloc::vec![0];
+        while cut.len() < CLOUD_BALLS {
+            let widest = (0..cut.len())
+                .filter(|&i| nodes[cut[i]].left != NO_CHILD)
+                .max_by(|&i, &j| {
+                    nodes[cut[i]]
+                        .ball
+                        .radius()
+                        .to_f64()
+                        .total_cmp(&nodes[cut[j]].ball.radius().to_f64())
+                });
+            let Some(i) = widest else { break };
+            let n = &nodes[cut[i]];
+            cut[i] = n.left as usize;
+            cut.push(n.right as usize);
+        }
+        let balls: Vec<([f64; 3], f64)> = cut
+            .iter()
+            .map(|&i| {
+                let b = &nodes[i].ball;
+                (b.centre().map(T::to_f64), b.radius().to_f64() + radius.to_f64())
+            })
+            .collect();
+        let proxy = Proxy::balls(&balls, delta.to_f64());
         Ok(Self {
             name: name.into(),
             geometry: Geometry::Points { tree, radius, ball },
             pose: Pose::IDENTITY,
-            delta: gamma::<T>(8) * sum_up(reach, radius) + T::from_u32(4) * T::ETA_NORMAL,
+            delta,
+            proxy,
         })
     }
 

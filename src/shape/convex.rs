@@ -402,6 +402,11 @@ impl<'a, T: Float> Convex<'a, T> {
         &self.core
     }
 
+    /// Whether the core is placed in the body frame (a compound's part).
+    pub(crate) const fn is_placed(&self) -> bool {
+        self.placed.is_some()
+    }
+
     /// A core point placed in the body frame: `M k + t` for a placed shape
     /// (the same rounded placement as [`core_support_point`](Self::core_support_point)),
     /// `k` itself otherwise.
