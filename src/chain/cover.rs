@@ -14,9 +14,7 @@
 //! holds the convex hull of the corners it holds, so it holds the exact
 //! pieces, and the exact pieces tile the triangles.
 
-use alloc::collections::BinaryHeap;
 use alloc::vec::Vec;
-use core::cmp::Ordering;
 
 use crate::Float;
 
@@ -24,20 +22,33 @@ use crate::Float;
 const MAX_SPLIT: usize = 48;
 
 /// The most pieces a link is cut into (a coarser piece size above it).
-const MAX_PIECES: usize = 60_000;
+const MAX_PIECES: usize = 20_000;
 
-/// Balls in the link frame whose union holds every triangle of the link.
+/// The tree's leaves: balls below the mesh's box diagonal over this.
+const LEAF_FRACTION: f64 = 20.0;
+
+/// No child.
+pub(crate) const LEAF: u32 = u32::MAX;
+
+/// A tree of balls in the link frame: every node's ball holds the pieces
+/// below it, so every cut of the tree (its top balls, or a node's children
+/// in its place) holds every triangle of the link.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct LinkCover {
-    /// The balls' centres and radii, structure of arrays.
+    /// The nodes' centres and radii, structure of arrays; node 0 is the root.
     pub(crate) cx: Vec<f32>,
     pub(crate) cy: Vec<f32>,
     pub(crate) cz: Vec<f32>,
     pub(crate) r: Vec<f32>,
-    /// A ball holding every cover ball: its centre and radius.
+    /// The nodes' children (`LEAF` for none; both or neither).
+    pub(crate) left: Vec<u32>,
+    pub(crate) right: Vec<u32>,
+    /// The top cut: the nodes the rake tests first.
+    pub(crate) top: Vec<u32>,
+    /// A ball holding every piece: its centre and radius.
     pub(crate) centre: [f32; 3],
     pub(crate) radius: f32,
-    /// An upper bound of `|c| + r` over the balls (the cover's reach from
+    /// An upper bound of `|c| + r` over the nodes (the cover's reach from
     /// the link frame's origin).
     pub(crate) reach: f64,
 }
@@ -51,22 +62,6 @@ struct Part {
     radius: f64,
 }
 
-impl PartialEq for Part {
-    fn eq(&self, o: &Self) -> bool {
-        self.radius.total_cmp(&o.radius) == Ordering::Equal
-    }
-}
-impl Eq for Part {}
-impl PartialOrd for Part {
-    fn partial_cmp(&self, o: &Self) -> Option<Ordering> {
-        Some(self.cmp(o))
-    }
-}
-impl Ord for Part {
-    fn cmp(&self, o: &Self) -> Ordering {
-        self.radius.total_cmp(&o.radius)
-    }
-}
 
 fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
@@ -195,33 +190,18 @@ impl LinkCover {
         // (proofs/13-chains.md, Lemma 13.9).
         let biggest = v.iter().map(|p| norm(*p)).fold(0.0f64, f64::max);
         let piece_err = 16.0 * f64::EPSILON * 3.0 * biggest + 4.0 * f64::MIN_POSITIVE;
-        let mut order: Vec<u32> = (0..pieces.corners.len() as u32).collect();
-        let root = part(&pieces, &order, 0, order.len());
-        let mut heap = BinaryHeap::new();
-        heap.push(root);
-        let mut done: Vec<Part> = Vec::new();
-        while let Some(p) = heap.pop() {
-            if done.len() + heap.len() + 1 >= max_balls.max(1) || p.hi - p.lo < 2 {
-                done.push(p);
-                if done.len() + heap.len() >= max_balls.max(1) {
-                    done.extend(heap.drain());
-                    break;
-                }
-                continue;
-            }
-            let mid = split(&pieces, &mut order, p.lo, p.hi);
-            heap.push(part(&pieces, &order, p.lo, mid));
-            heap.push(part(&pieces, &order, mid, p.hi));
-        }
+        // The balls first by deep centres (each ball a little more than
+        // the largest ball about its centre inside the hull), then, for any
+        // piece those leave, by the top-down split.
+        let groups = deep_cover(&pieces, &v, triangles, diag, max_balls);
         let mut cover = Self::default();
         let mut reach = 0.0f64;
-        for p in &done {
-            let centre = refine(&pieces, &order, p);
+        for (centre, members) in &groups {
             let c32 = centre.map(|x| x as f32);
             let c64 = c32.map(f64::from);
             let mut r = 0.0f64;
-            for &k in &order[p.lo..p.hi] {
-                for &i in &pieces.corners[k as usize] {
+            for &q in members {
+                for &i in &pieces.corners[q as usize] {
                     r = r.max(norm(sub(pieces.points[i as usize], c64)));
                 }
             }
@@ -229,16 +209,25 @@ impl LinkCover {
             // `piece_err`; then up to the next f32.
             let r32 = up32(r * (1.0 + 8.0 * f64::EPSILON) + piece_err);
             reach = reach.max(norm(c64) * (1.0 + 4.0 * f64::EPSILON) + f64::from(r32));
+            cover.top.push(cover.r.len() as u32);
             cover.cx.push(c32[0]);
             cover.cy.push(c32[1]);
             cover.cz.push(c32[2]);
             cover.r.push(r32);
+            cover.left.push(LEAF);
+            cover.right.push(LEAF);
         }
-        // The enclosing ball: the middle of the balls' boxes.
+        cover.finish(reach);
+        Some(cover)
+    }
+
+    /// The enclosing ball (the middle of the top balls' boxes) and the reach.
+    fn finish(&mut self, reach: f64) {
+        let cover = self;
         let (mut blo, mut bhi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-        for b in 0..cover.r.len() {
-            let c = cover.centre_f64(b);
-            let r = f64::from(cover.r[b]);
+        for &b in &cover.top {
+            let c = cover.centre_f64(b as usize);
+            let r = f64::from(cover.r[b as usize]);
             for k in 0..3 {
                 blo[k] = blo[k].min(c[k] - r);
                 bhi[k] = bhi[k].max(c[k] + r);
@@ -247,13 +236,13 @@ impl LinkCover {
         let mid = [0, 1, 2].map(|k| ((blo[k] + bhi[k]) * 0.5) as f32);
         let mid64 = mid.map(f64::from);
         let mut big = 0.0f64;
-        for b in 0..cover.r.len() {
+        for &b in &cover.top {
+            let b = b as usize;
             big = big.max(norm(sub(cover.centre_f64(b), mid64)) + f64::from(cover.r[b]));
         }
         cover.centre = mid;
         cover.radius = up32(big * (1.0 + 8.0 * f64::EPSILON));
         cover.reach = reach * (1.0 + 4.0 * f64::EPSILON);
-        Some(cover)
     }
 
     /// Ball `b`'s centre, exactly.
@@ -266,11 +255,170 @@ impl LinkCover {
         ]
     }
 
-    /// The number of balls.
+    /// The number of nodes.
     #[inline]
     pub(crate) fn len(&self) -> usize {
         self.r.len()
     }
+}
+
+/// Directions on the sphere (a Fibonacci lattice).
+fn directions(n: usize) -> Vec<[f64; 3]> {
+    let golden = core::f64::consts::PI * (3.0 - 5.0f64.sqrt());
+    (0..n)
+        .map(|i| {
+            let z = 1.0 - 2.0 * (i as f64 + 0.5) / n as f64;
+            let r = (1.0 - z * z).max(0.0).sqrt();
+            let a = golden * i as f64;
+            [r * a.cos(), r * a.sin(), z]
+        })
+        .collect()
+}
+
+/// A choice of balls, each with the pieces it is to hold (only a choice:
+/// the radii are measured from the pieces afterwards). Candidate centres on
+/// a grid inside the mesh's hull, each with `d`, its distance to the hull's
+/// boundary (estimated along 128 directions); a candidate takes the pieces
+/// within `d + eps` of it; greedy set cover, `eps` doubled from a
+/// fiftieth of the mesh's size until at most `max_balls` balls do; pieces
+/// no candidate takes (far from the hull's inside: a flat or thin mesh)
+/// grouped by the top-down split.
+fn deep_cover(
+    pieces: &Pieces,
+    v: &[[f64; 3]],
+    triangles: &[[u32; 3]],
+    diag: f64,
+    max_balls: usize,
+) -> Vec<([f64; 3], Vec<u32>)> {
+    let max_balls = max_balls.max(1);
+    let used: Vec<[f64; 3]> = {
+        let mut seen = alloc::vec![false; v.len()];
+        for t in triangles {
+            for &i in t {
+                seen[i as usize] = true;
+            }
+        }
+        v.iter().zip(seen).filter(|(_, s)| *s).map(|(p, _)| *p).collect()
+    };
+    let dirs = directions(128);
+    let support: Vec<f64> = dirs
+        .iter()
+        .map(|u| used.iter().map(|p| p[0] * u[0] + p[1] * u[1] + p[2] * u[2]).fold(f64::MIN, f64::max))
+        .collect();
+    let depth = |c: [f64; 3]| {
+        dirs.iter()
+            .zip(&support)
+            .map(|(u, h)| h - (c[0] * u[0] + c[1] * u[1] + c[2] * u[2]))
+            .fold(f64::MAX, f64::min)
+    };
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for p in &used {
+        for k in 0..3 {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    let step = diag / 20.0;
+    let mut cands: Vec<([f64; 3], f64)> = Vec::new();
+    let counts = [0, 1, 2].map(|k| (((hi[k] - lo[k]) / step).ceil() as usize).clamp(1, 40));
+    for i in 0..counts[0] {
+        for j in 0..counts[1] {
+            for k in 0..counts[2] {
+                let c = [
+                    lo[0] + (i as f64 + 0.5) * (hi[0] - lo[0]) / counts[0] as f64,
+                    lo[1] + (j as f64 + 0.5) * (hi[1] - lo[1]) / counts[1] as f64,
+                    lo[2] + (k as f64 + 0.5) * (hi[2] - lo[2]) / counts[2] as f64,
+                ];
+                let d = depth(c);
+                if d > 0.0 {
+                    cands.push((c, d));
+                }
+            }
+        }
+    }
+    let n = pieces.corners.len();
+    // Each piece's centroid and the largest distance from it to a corner.
+    let spread: Vec<f64> = (0..n)
+        .map(|q| {
+            pieces.corners[q]
+                .iter()
+                .map(|&i| norm(sub(pieces.points[i as usize], pieces.centroids[q])))
+                .fold(0.0, f64::max)
+        })
+        .collect();
+    let mut eps = diag / 80.0;
+    let mut best: Option<Vec<([f64; 3], Vec<u32>)>> = None;
+    for _ in 0..16 {
+        // Which candidates take which pieces.
+        let takes: Vec<Vec<u32>> = cands
+            .iter()
+            .map(|&(c, d)| {
+                (0..n as u32)
+                    .filter(|&q| norm(sub(pieces.centroids[q as usize], c)) + spread[q as usize] <= d + eps)
+                    .collect()
+            })
+            .collect();
+        let mut covered = alloc::vec![false; n];
+        let mut left = n;
+        let mut groups: Vec<([f64; 3], Vec<u32>)> = Vec::new();
+        let mut gain: Vec<usize> = takes.iter().map(Vec::len).collect();
+        while left > 0 {
+            let Some((ci, &g)) = gain.iter().enumerate().max_by_key(|&(_, g)| *g) else { break };
+            if g == 0 {
+                break;
+            }
+            let mut members = Vec::new();
+            for &q in &takes[ci] {
+                if !covered[q as usize] {
+                    covered[q as usize] = true;
+                    members.push(q);
+                    left -= 1;
+                }
+            }
+            groups.push((cands[ci].0, members));
+            // The gains of every candidate, again (the lists are short).
+            for (k, t) in takes.iter().enumerate() {
+                gain[k] = t.iter().filter(|&&q| !covered[q as usize]).count();
+            }
+            if groups.len() > 4 * max_balls {
+                break;
+            }
+        }
+        // What no candidate took: by the top-down split, a few balls.
+        let rest: Vec<u32> = (0..n as u32).filter(|&q| !covered[q as usize]).collect();
+        if !rest.is_empty() {
+            let room = max_balls.saturating_sub(groups.len()).max(1);
+            groups.extend(split_groups(pieces, rest, room));
+        }
+        let fits = groups.len() <= max_balls;
+        if fits || best.as_ref().is_none_or(|b| groups.len() < b.len()) {
+            best = Some(groups);
+        }
+        if fits {
+            break;
+        }
+        eps *= 1.3;
+    }
+    best.unwrap_or_default()
+}
+
+/// The pieces `rest` in at most `count` groups by the top-down split, each
+/// with the middle of its corners' box as its centre.
+fn split_groups(pieces: &Pieces, mut rest: Vec<u32>, count: usize) -> Vec<([f64; 3], Vec<u32>)> {
+    let mut parts = alloc::vec![(0usize, rest.len())];
+    while parts.len() < count {
+        let Some(i) = (0..parts.len()).filter(|&i| parts[i].1 - parts[i].0 >= 2).max_by_key(|&i| parts[i].1 - parts[i].0) else {
+            break;
+        };
+        let (lo, hi) = parts[i];
+        let mid = split(pieces, &mut rest, lo, hi);
+        parts[i] = (lo, mid);
+        parts.push((mid, hi));
+    }
+    parts
+        .into_iter()
+        .map(|(lo, hi)| (part(pieces, &rest, lo, hi).centre, rest[lo..hi].to_vec()))
+        .collect()
 }
 
 /// The least `f32` at least `x` (for finite non-negative `x`).
@@ -372,7 +520,8 @@ mod tests {
     /// an f64 distance: an independent check of the cover's claim.
     fn check_cover(vertices: &[[f64; 3]], triangles: &[[u32; 3]], balls: usize) {
         let cover = LinkCover::fit(vertices, triangles, balls).expect("a cover");
-        assert!(cover.len() <= balls.max(1), "{} balls", cover.len());
+        assert!(cover.top.len() <= balls.max(1), "{} balls", cover.top.len());
+        let leaves: Vec<usize> = (0..cover.len()).filter(|&k| cover.left[k] == LEAF).collect();
         let n = 40;
         for t in triangles {
             let [a, b, c] = t.map(|i| vertices[i as usize]);
@@ -380,10 +529,12 @@ mod tests {
                 for j in 0..=(n - i) {
                     let (s, u) = (f64::from(i) / f64::from(n), f64::from(j) / f64::from(n));
                     let p = [0, 1, 2].map(|k| a[k] + s * (b[k] - a[k]) + u * (c[k] - a[k]));
-                    let inside = (0..cover.len()).any(|k| {
-                        norm(sub(p, cover.centre_f64(k))) <= f64::from(cover.r[k])
-                    });
-                    assert!(inside, "point {p:?} of triangle {t:?} is in no ball");
+                    let held = |k: usize| norm(sub(p, cover.centre_f64(k))) <= f64::from(cover.r[k]);
+                    assert!(
+                        cover.top.iter().any(|&k| held(k as usize)),
+                        "point {p:?} of triangle {t:?} is in no top ball"
+                    );
+                    assert!(leaves.iter().any(|&k| held(k)), "point {p:?} is in no leaf");
                     let e = norm(sub(p, cover.centre.map(f64::from)));
                     assert!(e <= f64::from(cover.radius), "outside the enclosing ball");
                 }
@@ -405,7 +556,7 @@ mod tests {
 
     #[test]
     fn covers_hold_random_meshes() {
-        let mut rng = crate::rng::Rng::new(7);
+        let mut rng = crate::rng::SplitMix64::new(7);
         for case in 0..30 {
             let scale = [1e-3, 0.1, 1.0, 30.0][case % 4];
             let v: Vec<[f64; 3]> = (0..12)

@@ -172,6 +172,8 @@ pub(super) struct EdgeWork<T> {
     /// interval and the range of its items in `items`.
     level: Vec<([T; 2], usize, usize)>,
     next: Vec<([T; 2], usize, usize)>,
+    /// The motion slots an interval's items use.
+    used: Vec<bool>,
 }
 
 /// The scene along one edge, as the engine sees it.
@@ -215,16 +217,19 @@ impl<T: Float> Edge<'_, T> {
         self.report(found, w)
     }
 
-    /// Runs the query from the (sub-interval, item) pairs the rake left,
-    /// `fails` sorted by sub-interval (`i` is `[i / times, (i + 1) / times]`,
-    /// `times` a power of two, so every end is dyadic), the items indices
-    /// into `initial`; every other (sub-interval, item) pair is certified
-    /// clear by the rake (Lemma 13.13). Depth first in time for the first
-    /// contact, else every sub-interval's items before any halves.
+    /// Runs the query from the (sub-interval, item) pairs the rake left:
+    /// `fails` as `(order, start, item)` for the sub-interval
+    /// `[start / times, (start + 1) / times]` (`times` a power of two, so
+    /// every end is dyadic), `item` an index into `initial`, sorted (and
+    /// with every pair of one sub-interval together); every other
+    /// (sub-interval, item) pair is certified clear by the rake (Lemma
+    /// 13.13). Depth first in time for the first contact (`order` then zero:
+    /// the sub-intervals in time order), else every sub-interval's items
+    /// before any halves, in the order given.
     pub(super) fn run_spans(
         &self,
         initial: &[Item],
-        fails: &[(u32, u32)],
+        fails: &[(u32, u32, u32)],
         (times, lane_tests): (u32, usize),
         slots: &[(usize, usize)],
         w: &mut EdgeWork<T>,
@@ -238,15 +243,15 @@ impl<T: Float> Edge<'_, T> {
         level.clear();
         let mut i = 0;
         while i < fails.len() {
-            let lane = fails[i].0;
+            let (key, first, _) = fails[i];
             let start = w.items.len();
-            while i < fails.len() && fails[i].0 == lane {
-                w.items.push(initial[fails[i].1 as usize]);
+            while i < fails.len() && fails[i].0 == key && fails[i].1 == first {
+                w.items.push(initial[fails[i].2 as usize]);
                 i += 1;
             }
             let span = [
-                T::from_u32(lane) * scale,
-                T::from_u32(lane + 1) * scale,
+                T::from_u32(first) * scale,
+                T::from_u32(first + 1) * scale,
             ];
             level.push((span, start, w.items.len()));
         }
@@ -374,7 +379,7 @@ impl<T: Float> Edge<'_, T> {
         let mut result = Ok(());
         'levels: while !level.is_empty() {
             next.clear();
-            for &(span, start, end) in &level {
+            for (at, &(span, start, end)) in level.iter().enumerate() {
                 let kept = w.items.len();
                 match self.check_interval(w, slots, span, start, end) {
                     Ok(mid) => {
@@ -385,7 +390,14 @@ impl<T: Float> Edge<'_, T> {
                         }
                     }
                     Err(stop) => {
-                        let pending = next.first().map_or(span[0], |i| i.0[0]);
+                        // The earliest start not yet certified: this span,
+                        // the halves found so far and the spans not yet
+                        // taken (not in time order when the rake put
+                        // urgent ones first).
+                        let pending = next
+                            .iter()
+                            .chain(&level[at + 1..])
+                            .fold(span[0], |m, i| if i.0[0] < m { i.0[0] } else { m });
                         result = Err((pending, stop));
                         break 'levels;
                     }
@@ -421,8 +433,20 @@ impl<T: Float> Edge<'_, T> {
         }
         w.stats.intervals += 1;
         self.segment.place(&mut w.work, mid);
-        for (m, &(link, skip)) in w.motions.iter_mut().zip(slots) {
-            w.work.fill(chain, m, link, skip, half);
+        // Only the motion slots these items use (their descendants use the
+        // same ones): a link's path terms cost as much as a few tests.
+        w.used.clear();
+        w.used.resize(slots.len(), false);
+        for it in &w.items[start..end] {
+            w.used[it.slot as usize] = true;
+            if matches!(it.target, Target::Link(..)) {
+                w.used[it.slot_b as usize] = true;
+            }
+        }
+        for (k, (m, &(link, skip))) in w.motions.iter_mut().zip(slots).enumerate() {
+            if w.used[k] {
+                w.work.fill(chain, m, link, skip, half);
+            }
         }
         for i in start..end {
             w.stack.push((w.items[i], [-T::ONE; 2]));

@@ -220,7 +220,7 @@ mod tests {
     /// the rake's tests against dense sampling).
     #[test]
     fn lanes_place_like_f64_forward_kinematics() {
-        let mut rng = crate::rng::Rng::new(3);
+        let mut rng = crate::rng::SplitMix64::new(3);
         let mut b = ChainBuilder::<f64>::new();
         let mut prev = b.add_link("base", None).expect("link");
         for i in 0..6 {

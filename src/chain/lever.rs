@@ -102,35 +102,48 @@ pub(crate) fn link_levers<T: Float>(chain: &Chain<T>, link: usize, vertices: &[[
     lever
 }
 
-/// An upper bound of `|p'(t)|` for every point `p` of link `link` at every
-/// time of the segment `q0 -> q1`, counting the joints of its path after the
-/// first `skip` (Lemma 13.11 with Lemma 13.1): `sum over turning joints of
-/// r_j (L_j + slides below j) + sum over sliding joints of r_j`.
-pub(crate) fn sweep_rate<T: Float>(
+/// The most joints of a path a pair may skip (their common ancestor's):
+/// deeper chains are left to the edge engine by the rake.
+pub(crate) const MAX_SKIP: usize = 15;
+
+/// For every `skip` in `0..=MAX_SKIP`, an upper bound of `|p'(t)|` for
+/// every point `p` of link `link` at every time of the segment `q0 -> q1`,
+/// counting the joints of its path after the first `skip` (Lemma 13.11 with
+/// Lemma 13.1): `sum over turning joints of r_j (L_j + slides below j) +
+/// sum over sliding joints of r_j`, into `out[skip]` (one pass up the path).
+pub(crate) fn sweep_rates<T: Float>(
     chain: &Chain<T>,
     link: usize,
     levers: &[f64],
     q0: &[T],
     q1: &[T],
-    skip: usize,
-) -> f64 {
+    out: &mut [f64],
+) {
     let path = &chain.links[link].path;
-    let (mut v, mut extra) = (0.0f64, 0.0f64);
     let n = path.len().min(levers.len());
-    for i in (skip.min(n)..n).rev() {
+    let (mut v, mut extra) = (0.0f64, 0.0f64);
+    // The rounding of the sums, the same for every skip.
+    let up = 1.0 + f64::from(4 * n as u32 + 8) * f64::EPSILON;
+    for skip in (n.min(out.len())..out.len()).rev() {
+        out[skip] = 0.0;
+    }
+    for i in (0..n).rev() {
         let joint = &chain.joints[path[i]];
-        let Some(d) = joint.dof else { continue };
-        let (a, b) = (q0[d].to_f64(), q1[d].to_f64());
-        // `fl(b - a)` is within `u |b - a|` of it in `f64` (exact for `f32`).
-        let r = (b - a).abs() * (1.0 + 2.0 * f64::EPSILON);
-        if joint.spec.kind == JointKind::Prismatic {
-            v += r;
-            extra += a.abs().max(b.abs());
-        } else {
-            v += r * (levers[i] + extra);
+        if let Some(d) = joint.dof {
+            let (a, b) = (q0[d].to_f64(), q1[d].to_f64());
+            // `fl(b - a)` is within `u |b - a|` of it in `f64` (exact for `f32`).
+            let r = (b - a).abs() * (1.0 + 2.0 * f64::EPSILON);
+            if joint.spec.kind == JointKind::Prismatic {
+                v += r;
+                extra += a.abs().max(b.abs());
+            } else {
+                v += r * (levers[i] + extra);
+            }
+        }
+        if i < out.len() {
+            out[i] = v * up;
         }
     }
-    v * (1.0 + f64::from(4 * n as u32 + 8) * f64::EPSILON)
 }
 
 /// Lemma 13.10: an upper bound of the distance between a point of link

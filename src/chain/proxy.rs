@@ -268,6 +268,28 @@ impl Proxy {
         (self.size.is_finite() && self.lambda.is_finite()).then_some(self)
     }
 
+    /// `phi` at one point: [`phi`](Self::phi)'s arithmetic for one lane.
+    #[inline]
+    pub(crate) fn phi1(&self, x: [f32; 3]) -> f32 {
+        let mut lanes = [[0.0f32; LANES]; 3];
+        for k in 0..3 {
+            lanes[k] = [x[k]; LANES];
+        }
+        match &self.kind {
+            Kind::Box { c, u, h, r } => {
+                let d = [x[0] - c[0], x[1] - c[1], x[2] - c[2]];
+                let mut s = 0.0f32;
+                for k in 0..3 {
+                    let y = u[k][0] * d[0] + u[k][1] * d[1] + u[k][2] * d[2];
+                    let e = (y.abs() - h[k]).max(0.0);
+                    s += e * e;
+                }
+                s.sqrt() - r
+            }
+            _ => self.phi(&lanes)[0],
+        }
+    }
+
     /// `phi` at the points `x` (one per lane), in `f32`.
     #[inline]
     pub(crate) fn phi(&self, x: &[Lane; 3]) -> Lane {
@@ -395,7 +417,7 @@ mod tests {
     /// and `phi / lambda` never exceeds the distance to a sampled shape.
     #[test]
     fn proxies_hold_their_shapes_and_bound_distances() {
-        let mut rng = crate::rng::Rng::new(11);
+        let mut rng = crate::rng::SplitMix64::new(11);
         for case in 0..200 {
             let angle = rng.range(-3.0, 3.0);
             let axis = rng.direction();

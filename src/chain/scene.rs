@@ -687,12 +687,18 @@ impl<T: Float> EdgeChecker<'_, T> {
                 padding: scene.params.padding.to_f64(),
                 sweep: scene.rake.sweep,
             };
-            if rake.run(q0, q1, &self.initial, &self.slots, &mut self.rake) {
+            if rake.run(q0, q1, &self.initial, &self.slots, !first_contact, &mut self.rake) {
                 let r = &self.rake;
+                if std::env::var_os("RAKE_FAILS").is_some() {
+                    for f in &r.fails {
+                        let it = self.initial[f.2 as usize];
+                        std::eprintln!("FAIL {} {} {:?}", f.0, it.link, it.target);
+                    }
+                }
                 return Ok(edge.run_spans(
                     &self.initial,
                     &r.fails,
-                    (r.times, r.tests),
+                    (r.times_count, r.tests),
                     &self.slots,
                     &mut self.work,
                 ));
