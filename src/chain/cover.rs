@@ -22,44 +22,29 @@ use crate::Float;
 const MAX_SPLIT: usize = 48;
 
 /// The most pieces a link is cut into (a coarser piece size above it).
-const MAX_PIECES: usize = 20_000;
+const MAX_PIECES: usize = 6_000;
 
-/// The tree's leaves: balls below the mesh's box diagonal over this.
-const LEAF_FRACTION: f64 = 20.0;
 
-/// No child.
-pub(crate) const LEAF: u32 = u32::MAX;
-
-/// A tree of balls in the link frame: every node's ball holds the pieces
-/// below it, so every cut of the tree (its top balls, or a node's children
-/// in its place) holds every triangle of the link.
+/// Balls in the link frame whose union holds every triangle of the link.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct LinkCover {
-    /// The nodes' centres and radii, structure of arrays; node 0 is the root.
+    /// The balls' centres and radii, structure of arrays.
     pub(crate) cx: Vec<f32>,
     pub(crate) cy: Vec<f32>,
     pub(crate) cz: Vec<f32>,
     pub(crate) r: Vec<f32>,
-    /// The nodes' children (`LEAF` for none; both or neither).
-    pub(crate) left: Vec<u32>,
-    pub(crate) right: Vec<u32>,
-    /// The top cut: the nodes the rake tests first.
-    pub(crate) top: Vec<u32>,
-    /// A ball holding every piece: its centre and radius.
+    /// A ball holding every ball of the cover: its centre and radius.
     pub(crate) centre: [f32; 3],
     pub(crate) radius: f32,
-    /// An upper bound of `|c| + r` over the nodes (the cover's reach from
+    /// An upper bound of `|c| + r` over the balls (the cover's reach from
     /// the link frame's origin).
     pub(crate) reach: f64,
 }
 
-/// A node of the top-down split: a range of the piece order and its ball.
+/// The middle of a set of pieces' corners' box.
 #[derive(Clone, Copy, Debug)]
 struct Part {
-    lo: usize,
-    hi: usize,
     centre: [f64; 3],
-    radius: f64,
 }
 
 
@@ -209,13 +194,10 @@ impl LinkCover {
             // `piece_err`; then up to the next f32.
             let r32 = up32(r * (1.0 + 8.0 * f64::EPSILON) + piece_err);
             reach = reach.max(norm(c64) * (1.0 + 4.0 * f64::EPSILON) + f64::from(r32));
-            cover.top.push(cover.r.len() as u32);
             cover.cx.push(c32[0]);
             cover.cy.push(c32[1]);
             cover.cz.push(c32[2]);
             cover.r.push(r32);
-            cover.left.push(LEAF);
-            cover.right.push(LEAF);
         }
         cover.finish(reach);
         Some(cover)
@@ -225,9 +207,9 @@ impl LinkCover {
     fn finish(&mut self, reach: f64) {
         let cover = self;
         let (mut blo, mut bhi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-        for &b in &cover.top {
-            let c = cover.centre_f64(b as usize);
-            let r = f64::from(cover.r[b as usize]);
+        for b in 0..cover.len() {
+            let c = cover.centre_f64(b);
+            let r = f64::from(cover.r[b]);
             for k in 0..3 {
                 blo[k] = blo[k].min(c[k] - r);
                 bhi[k] = bhi[k].max(c[k] + r);
@@ -236,8 +218,7 @@ impl LinkCover {
         let mid = [0, 1, 2].map(|k| ((blo[k] + bhi[k]) * 0.5) as f32);
         let mid64 = mid.map(f64::from);
         let mut big = 0.0f64;
-        for &b in &cover.top {
-            let b = b as usize;
+        for b in 0..cover.len() {
             big = big.max(norm(sub(cover.centre_f64(b), mid64)) + f64::from(cover.r[b]));
         }
         cover.centre = mid;
@@ -255,7 +236,7 @@ impl LinkCover {
         ]
     }
 
-    /// The number of nodes.
+    /// The number of balls.
     #[inline]
     pub(crate) fn len(&self) -> usize {
         self.r.len()
@@ -318,9 +299,9 @@ fn deep_cover(
             hi[k] = hi[k].max(p[k]);
         }
     }
-    let step = diag / 20.0;
+    let step = diag / 16.0;
     let mut cands: Vec<([f64; 3], f64)> = Vec::new();
-    let counts = [0, 1, 2].map(|k| (((hi[k] - lo[k]) / step).ceil() as usize).clamp(1, 40));
+    let counts = [0, 1, 2].map(|k| (((hi[k] - lo[k]) / step).ceil() as usize).clamp(1, 24));
     for i in 0..counts[0] {
         for j in 0..counts[1] {
             for k in 0..counts[2] {
@@ -337,52 +318,61 @@ fn deep_cover(
         }
     }
     let n = pieces.corners.len();
-    // Each piece's centroid and the largest distance from it to a corner.
-    let spread: Vec<f64> = (0..n)
-        .map(|q| {
-            pieces.corners[q]
-                .iter()
-                .map(|&i| norm(sub(pieces.points[i as usize], pieces.centroids[q])))
-                .fold(0.0, f64::max)
+    // Per candidate, the pieces by the `eps` it needs to take them (the
+    // largest distance to a corner less the candidate's depth), kept up to
+    // a quarter of the mesh's size.
+    let cap = diag / 6.0;
+    let lists: Vec<Vec<(f32, u32)>> = cands
+        .iter()
+        .map(|&(c, d)| {
+            let mut l: Vec<(f32, u32)> = (0..n as u32)
+                .filter_map(|q| {
+                    let need = pieces.corners[q as usize]
+                        .iter()
+                        .map(|&i| norm(sub(pieces.points[i as usize], c)))
+                        .fold(0.0, f64::max)
+                        - d;
+                    (need <= cap).then_some((need as f32, q))
+                })
+                .collect();
+            l.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+            l
         })
         .collect();
     let mut eps = diag / 80.0;
     let mut best: Option<Vec<([f64; 3], Vec<u32>)>> = None;
-    for _ in 0..16 {
-        // Which candidates take which pieces.
-        let takes: Vec<Vec<u32>> = cands
+    let mut covered = alloc::vec![false; n];
+    for _ in 0..12 {
+        // Lazy greedy set cover: a candidate's gain only falls as pieces
+        // are covered, so the largest stale gain is re-counted first.
+        covered.iter_mut().for_each(|c| *c = false);
+        let takes: Vec<&[(f32, u32)]> = lists
             .iter()
-            .map(|&(c, d)| {
-                (0..n as u32)
-                    .filter(|&q| norm(sub(pieces.centroids[q as usize], c)) + spread[q as usize] <= d + eps)
-                    .collect()
-            })
+            .map(|l| &l[..l.partition_point(|&(need, _)| f64::from(need) <= eps)])
             .collect();
-        let mut covered = alloc::vec![false; n];
+        let mut heap: alloc::collections::BinaryHeap<(usize, usize)> =
+            takes.iter().enumerate().map(|(k, t)| (t.len(), k)).collect();
         let mut left = n;
         let mut groups: Vec<([f64; 3], Vec<u32>)> = Vec::new();
-        let mut gain: Vec<usize> = takes.iter().map(Vec::len).collect();
-        while left > 0 {
-            let Some((ci, &g)) = gain.iter().enumerate().max_by_key(|&(_, g)| *g) else { break };
-            if g == 0 {
+        while left > 0 && groups.len() <= 4 * max_balls {
+            let Some((stale, k)) = heap.pop() else { break };
+            if stale == 0 {
                 break;
             }
-            let mut members = Vec::new();
-            for &q in &takes[ci] {
+            let gain = takes[k].iter().filter(|&&(_, q)| !covered[q as usize]).count();
+            if gain < stale {
+                heap.push((gain, k));
+                continue;
+            }
+            let mut members = Vec::with_capacity(gain);
+            for &(_, q) in takes[k] {
                 if !covered[q as usize] {
                     covered[q as usize] = true;
                     members.push(q);
-                    left -= 1;
                 }
             }
-            groups.push((cands[ci].0, members));
-            // The gains of every candidate, again (the lists are short).
-            for (k, t) in takes.iter().enumerate() {
-                gain[k] = t.iter().filter(|&&q| !covered[q as usize]).count();
-            }
-            if groups.len() > 4 * max_balls {
-                break;
-            }
+            left -= members.len();
+            groups.push((cands[k].0, members));
         }
         // What no candidate took: by the top-down split, a few balls.
         let rest: Vec<u32> = (0..n as u32).filter(|&q| !covered[q as usize]).collect();
@@ -397,7 +387,7 @@ fn deep_cover(
         if fits {
             break;
         }
-        eps *= 1.3;
+        eps *= 1.4;
     }
     best.unwrap_or_default()
 }
@@ -431,8 +421,7 @@ pub(crate) fn up32(x: f64) -> f32 {
     }
 }
 
-/// The ball of the pieces `order[lo..hi]`: the middle of their corners'
-/// box, and the largest distance from it.
+/// The middle of the box of the corners of the pieces `order[lo..hi]`.
 fn part(pieces: &Pieces, order: &[u32], lo: usize, hi: usize) -> Part {
     let (mut a, mut b) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
     for &k in &order[lo..hi] {
@@ -444,18 +433,8 @@ fn part(pieces: &Pieces, order: &[u32], lo: usize, hi: usize) -> Part {
             }
         }
     }
-    let centre = [0, 1, 2].map(|d| (a[d] + b[d]) * 0.5);
-    let mut radius = 0.0f64;
-    for &k in &order[lo..hi] {
-        for &i in &pieces.corners[k as usize] {
-            radius = radius.max(norm(sub(pieces.points[i as usize], centre)));
-        }
-    }
     Part {
-        lo,
-        hi,
-        centre,
-        radius,
+        centre: [0, 1, 2].map(|d| (a[d] + b[d]) * 0.5),
     }
 }
 
@@ -480,37 +459,6 @@ fn split(pieces: &Pieces, order: &mut [u32], lo: usize, hi: usize) -> usize {
     lo + mid
 }
 
-/// A smaller ball's centre for a part: Badoiu-Clarkson steps towards the
-/// farthest corner, keeping the best centre seen (only a choice: the
-/// radius is measured afterwards).
-fn refine(pieces: &Pieces, order: &[u32], p: &Part) -> [f64; 3] {
-    let far = |c: [f64; 3]| {
-        let mut best = (0.0f64, c);
-        for &k in &order[p.lo..p.hi] {
-            for &i in &pieces.corners[k as usize] {
-                let q = pieces.points[i as usize];
-                let d = norm(sub(q, c));
-                if d > best.0 {
-                    best = (d, q);
-                }
-            }
-        }
-        best
-    };
-    let mut c = p.centre;
-    let (mut best_r, mut best_c) = (p.radius, p.centre);
-    for step in 0..24 {
-        let (r, q) = far(c);
-        if r < best_r {
-            best_r = r;
-            best_c = c;
-        }
-        let f = 1.0 / f64::from(step + 2);
-        c = [0, 1, 2].map(|d| c[d] + (q[d] - c[d]) * f);
-    }
-    best_c
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -520,8 +468,7 @@ mod tests {
     /// an f64 distance: an independent check of the cover's claim.
     fn check_cover(vertices: &[[f64; 3]], triangles: &[[u32; 3]], balls: usize) {
         let cover = LinkCover::fit(vertices, triangles, balls).expect("a cover");
-        assert!(cover.top.len() <= balls.max(1), "{} balls", cover.top.len());
-        let leaves: Vec<usize> = (0..cover.len()).filter(|&k| cover.left[k] == LEAF).collect();
+        assert!(cover.len() <= balls.max(1), "{} balls", cover.len());
         let n = 40;
         for t in triangles {
             let [a, b, c] = t.map(|i| vertices[i as usize]);
@@ -531,10 +478,9 @@ mod tests {
                     let p = [0, 1, 2].map(|k| a[k] + s * (b[k] - a[k]) + u * (c[k] - a[k]));
                     let held = |k: usize| norm(sub(p, cover.centre_f64(k))) <= f64::from(cover.r[k]);
                     assert!(
-                        cover.top.iter().any(|&k| held(k as usize)),
-                        "point {p:?} of triangle {t:?} is in no top ball"
+                        (0..cover.len()).any(held),
+                        "point {p:?} of triangle {t:?} is in no ball"
                     );
-                    assert!(leaves.iter().any(|&k| held(k)), "point {p:?} is in no leaf");
                     let e = norm(sub(p, cover.centre.map(f64::from)));
                     assert!(e <= f64::from(cover.radius), "outside the enclosing ball");
                 }
