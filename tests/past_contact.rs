@@ -642,3 +642,80 @@ fn a_held_pair_does_not_creep_in_a_step_at_a_time_f64() {
 fn a_held_pair_does_not_creep_in_a_step_at_a_time_f32() {
     a_held_pair_stays_below_its_ceiling::<f32>();
 }
+
+/// A ball spinning fast about its centre (or about a point near it), resting
+/// on a slowly turning box or sliding over it: the spin about the centre
+/// costs the closed form nothing (a ball's extent does not turn), so a
+/// resting ball is decided without a cast; until the answer's time the
+/// overlap, sampled from the ball's centre and the box's corners, stays
+/// below the ceiling.
+fn a_spinning_ball_on_a_box<T: Float>() {
+    let d = 1e-3;
+    let p = CaParams::<T>::default().with_contact_distance(T::from_f64(d));
+    let slack = sampling_slack::<T>(d);
+    let r = 0.1;
+    let hb = [0.5, 0.5, 0.5];
+    let ball = Shape::Convex(Convex::try_ball(T::from_f64(r)).expect("a ball"));
+    let cube = Shape::Convex(Convex::try_cuboid(hb.map(T::from_f64)).expect("a box"));
+    let n = [0.0, 0.0, -1.0];
+    let mut rng = Rng(641);
+    let (mut closed, mut decided) = (0, 0);
+    for case in 0..200 {
+        let depth = rng.range(-0.5, 2.0) * d;
+        // About its centre (even cases) or a point 2e-3 off it.
+        let off = if case % 2 == 0 { 0.0 } else { 2e-3 };
+        let w = rng.unit().map(|c| c * rng.range(0.0, 200.0));
+        let v = [
+            rng.range(-2.0, 2.0),
+            rng.range(-2.0, 2.0),
+            rng.range(-1e-3, 1e-3),
+        ];
+        let start = Isometry::try_new(Rotation::IDENTITY, v3::<T>([0.0, 0.0, 0.5 + r - depth]))
+            .expect("a pose");
+        let ma = RigidMotion::try_from_start(start, v3(v), v3(w), T::from_f64(DT))
+            .and_then(|m| m.try_with_local_centre(v3([off, 0.0, 0.0])))
+            .expect("a motion");
+        let mb = motion::<T>(
+            [0.0; 3],
+            ([0.0, 1.0, 0.0], rng.range(-0.01, 0.01)),
+            [0.0; 3],
+            rng.unit().map(|c| c * rng.range(0.0, 5e-3)),
+        );
+        let res = past_contact_below(ball, &ma, cube, &mb, v3(n), None, &p).expect("a ball");
+        let ceiling = res.ceiling.value.to_f64();
+        let until = match res.answer {
+            PastContact::Never => f64::INFINITY,
+            PastContact::At(t) => t.to_f64(),
+            _ => continue,
+        };
+        decided += 1;
+        closed += usize::from(!res.cast);
+        let centre = [[0.0; 3]];
+        for k in 0..=SAMPLES {
+            let t = DT * k as f64 / SAMPLES as f64;
+            if t >= until {
+                break;
+            }
+            let o = reach(&ma, &centre, n, t, true) + r - reach(&mb, &corners(hb), n, t, false);
+            assert!(
+                o < ceiling + slack,
+                "case {case}: at t = {t} the overlap {o} reached the ceiling {ceiling}"
+            );
+        }
+    }
+    // Every spin about the centre decided by the closed form.
+    assert!(
+        closed >= 100 && decided >= 100,
+        "closed form {closed}, decided {decided}"
+    );
+}
+
+#[test]
+fn a_spinning_ball_resting_on_a_box_is_decided_without_a_cast_f64() {
+    a_spinning_ball_on_a_box::<f64>();
+}
+
+#[test]
+fn a_spinning_ball_resting_on_a_box_is_decided_without_a_cast_f32() {
+    a_spinning_ball_on_a_box::<f32>();
+}

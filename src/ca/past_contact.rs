@@ -336,15 +336,20 @@ fn growth_up<T: Float>(
         if m.angular() == Vec3::ZERO {
             return Some(T::ZERO);
         }
-        let ball = match s {
+        // What turns: a convex shape's core (its radius around the core
+        // adds the same `radius |n|` to the extent at every time), a ball's
+        // centre, or every point of the bounding ball; within `rho` of the
+        // rotation centre. `|w| <= |w|_1`.
+        let turning = match s {
             Shape::HalfSpace(_) => return None,
-            s => s.bounding_ball().ok()?,
+            Shape::Convex(c) => c.placed_core_reach(),
+            Shape::Ball(ball) => ball.centre_norm_up(),
+            s => {
+                let ball = s.bounding_ball().ok()?;
+                add_up(ball.centre_norm_up(), ball.radius())
+            }
         };
-        // Every point within `rho` of the rotation centre; `|w| <= |w|_1`.
-        let rho = add_up(
-            add_up(ball.centre_norm_up(), ball.radius()),
-            m.local_reach(),
-        );
+        let rho = add_up(turning, m.local_reach());
         let angle = mul_up(m.angular().norm_l1().next_up(), span).min_nan(T::TWO);
         Some(mul_up(angle, rho))
     };
