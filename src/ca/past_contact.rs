@@ -225,41 +225,37 @@ pub fn past_contact_below<T: Float>(
         cast,
     };
     // The closed form (Lemma 12.14, Claim 1): no cast.
-    if let Some(growth) = growth_up(&a, motion_a, &b, motion_b, n) {
-        if add_up(overlap, growth) < ceiling {
-            return Ok(held(PastContact::Never, false));
-        }
-    }
-    // Room below the ceiling at the start; none: held at the start.
-    let room = (ceiling - overlap).next_down();
-    if !(room > T::ZERO) {
-        return Ok(held(PastContact::At(t0), false));
-    }
-    let answer = if motion_b.angular() == Vec3::ZERO {
-        cast_to_plane(
-            a,
-            motion_a,
-            motion_b,
-            plane,
-            lo_down + ceiling,
-            room,
-            params,
-        )?
-    } else if motion_a.angular() == Vec3::ZERO {
-        // The roles swapped: B against the half-space `-n . y >= -hi_up +
-        // ceiling` carried by A; the same overlap (Lemma 12.14, Claim 2).
-        let flipped = HalfSpace::try_new(normal)?;
-        cast_to_plane(
-            b,
-            motion_b,
-            motion_a,
-            flipped,
-            -hi_up + ceiling,
-            room,
-            params,
-        )?
-    } else {
+    let (Some(turn_a), Some(turn_b)) = (turn_up(&a, motion_a), turn_up(&b, motion_b)) else {
         return Ok(held(PastContact::Undecided, false));
+    };
+    let growth = add_up(linear_up(motion_a, motion_b, n), add_up(turn_a, turn_b));
+    if add_up(overlap, growth) < ceiling {
+        return Ok(held(PastContact::Never, false));
+    }
+    // The cast (Claim 2): the body that turns less carries the half-space,
+    // lowered by what its turn may move its extent.
+    let carried_by_b = turn_b <= turn_a;
+    let charge = if carried_by_b { turn_b } else { turn_a };
+    // Room below the ceiling at the start; none: held at the start (or
+    // undecided, when it is the carrier's turn that takes it).
+    let room = ((ceiling - overlap).next_down() - charge).next_down();
+    if !(room > T::ZERO) {
+        let answer = if charge > T::ZERO {
+            PastContact::Undecided
+        } else {
+            PastContact::At(t0)
+        };
+        return Ok(held(answer, false));
+    }
+    let answer = if carried_by_b {
+        let offset = ((lo_down + ceiling).next_down() - charge).next_down();
+        cast_to_plane(a, motion_a, motion_b, plane, offset, room, params)?
+    } else {
+        // The roles swapped: B against the half-space `-n . y >= -hi_up +
+        // ceiling` carried by A; the same overlap.
+        let flipped = HalfSpace::try_new(normal)?;
+        let offset = ((-hi_up + ceiling).next_down() - charge).next_down();
+        cast_to_plane(b, motion_b, motion_a, flipped, offset, room, params)?
     };
     Ok(held(answer, true))
 }
@@ -314,49 +310,46 @@ fn cast_to_plane<T: Float>(
     })
 }
 
-/// An upper bound of how much the overlap along `n` (`|n| <= 1 + 2u`) may
-/// grow over the motions' interval (Lemma 12.14, Claim 1):
-/// `((v_A - v_B) . n)^+ T + min(|w_A| T, 2) rho_A + min(|w_B| T, 2) rho_B`,
-/// each term rounded up; `None` for a half-space or a non-finite value.
-fn growth_up<T: Float>(
-    a: &Shape<'_, T>,
-    motion_a: &RigidMotion<T>,
-    b: &Shape<'_, T>,
-    motion_b: &RigidMotion<T>,
-    n: Vec3<T>,
-) -> Option<T> {
+/// An upper bound of `((v_A - v_B) . n)^+ T` over the motions' interval
+/// of length `T` (Lemma 12.14, Claim 1), rounded up.
+fn linear_up<T: Float>(motion_a: &RigidMotion<T>, motion_b: &RigidMotion<T>, n: Vec3<T>) -> T {
     let span = (motion_a.interval().end() - motion_a.interval().start()).next_up();
     let u8 = T::from_u32(8) * T::UNIT_ROUNDOFF;
-    // `|fl(v . n) - v . n| <= gamma_3 |v| |n|`, within `8 u |v|_1`; the
-    // difference one more rounding.
+    // `|fl(v . n) - v . n| <= gamma_3 |v| |n|`, within `4 u |v|_1` each; the
+    // difference and the sum one rounding more each.
     let (va, vb) = (motion_a.linear(), motion_b.linear());
     let rel = va.dot(n) - vb.dot(n) + mul_up(u8, add_up(va.norm_l1(), vb.norm_l1()));
-    let linear = mul_up(rel.next_up().max_nan(T::ZERO), span);
-    let turn = |s: &Shape<'_, T>, m: &RigidMotion<T>| -> Option<T> {
-        if m.angular() == Vec3::ZERO {
-            return Some(T::ZERO);
+    mul_up(rel.next_up().max_nan(T::ZERO), span)
+}
+
+/// An upper bound of how far a body's turn over the motion's interval may
+/// move its extent along `n` (`|n| <= 1 + 2u`), beyond its rotation
+/// centre's travel (Lemma 12.14, Claim 1): `min(|w| T, 2) rho`, `rho` the
+/// reach from the rotation centre of what turns: a convex shape's core (its
+/// radius around the core adds the same `radius |n|` to the extent at every
+/// time), a ball's centre, or every point of the bounding ball. `0` for a
+/// body that does not turn; `None` for a half-space.
+fn turn_up<T: Float>(s: &Shape<'_, T>, m: &RigidMotion<T>) -> Option<T> {
+    let turning = match s {
+        Shape::HalfSpace(_) => return None,
+        _ if m.angular() == Vec3::ZERO => return Some(T::ZERO),
+        Shape::Convex(c) => c.placed_core_reach(),
+        Shape::Ball(ball) => ball.centre_norm_up(),
+        s => {
+            let ball = s.bounding_ball().ok()?;
+            add_up(ball.centre_norm_up(), ball.radius())
         }
-        // What turns: a convex shape's core (its radius around the core
-        // adds the same `radius |n|` to the extent at every time), a ball's
-        // centre, or every point of the bounding ball; within `rho` of the
-        // rotation centre. `|w| <= |w|_1`.
-        let turning = match s {
-            Shape::HalfSpace(_) => return None,
-            Shape::Convex(c) => c.placed_core_reach(),
-            Shape::Ball(ball) => ball.centre_norm_up(),
-            s => {
-                let ball = s.bounding_ball().ok()?;
-                add_up(ball.centre_norm_up(), ball.radius())
-            }
-        };
-        let rho = add_up(turning, m.local_reach());
-        let angle = mul_up(m.angular().norm_l1().next_up(), span).min_nan(T::TWO);
-        Some(mul_up(angle, rho))
     };
-    let g = add_up(linear, add_up(turn(a, motion_a)?, turn(b, motion_b)?));
-    // `|n| <= 1 + 2u` scales the rotational terms; a relative `8 u` covers it.
-    let g = mul_up(g, T::ONE + u8);
-    g.is_finite().then_some(g)
+    let span = (m.interval().end() - m.interval().start()).next_up();
+    let rho = add_up(turning, m.local_reach());
+    // `|w| <= |w|_1`; the 1-norm's own rounding and `|n|` within a relative
+    // `8 u`.
+    let angle = mul_up(m.angular().norm_l1().next_up(), span).min_nan(T::TWO);
+    let t = mul_up(
+        mul_up(angle, rho),
+        T::ONE + T::from_u32(8) * T::UNIT_ROUNDOFF,
+    );
+    t.is_finite().then_some(t)
 }
 
 /// Floats at most and at least the exact greatest `n . x` over `shape`
