@@ -73,7 +73,9 @@
 
 use std::sync::Arc;
 
-use motion_bound::ca::CaParams;
+use std::collections::HashMap;
+
+use motion_bound::ca::{CaParams, Ceiling};
 use parry3d_f64::bounding_volume::BoundingVolume;
 use rapier3d_f64::dynamics::{RigidBodyHandle, RigidBodySet};
 use rapier3d_f64::geometry::{ColliderHandle, ColliderSet};
@@ -81,7 +83,7 @@ use rapier3d_f64::math::{Pose, Vector};
 use rapier3d_f64::parry::query::NonlinearRigidMotion;
 use rapier3d_f64::pipeline::PhysicsWorld;
 
-use crate::f64::{CastError, CertifiedDispatcher, PastContact, ShapeCache, Swept};
+use crate::f64::{CastError, CertifiedDispatcher, PastContact, ShapeCache, Swept, Touching};
 
 /// What one [`CertifiedPass::clamp`] did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -102,6 +104,10 @@ pub struct ClampStats {
     /// motion's centre, which moves on a line) never came within the
     /// contact distance: decided apart without a cast.
     pub apart: usize,
+    /// Pairs touching at an earlier step whose overlap along that step's
+    /// normal is certified to stay below its ceiling by the closed form
+    /// (Lemma 12.14): decided with a few support points, no cast.
+    pub checked: usize,
 }
 
 /// The certified pass (see the module docs).
@@ -127,6 +133,12 @@ pub struct CertifiedPass {
     hits: Vec<(usize, Option<usize>, f64)>,
     /// Scratch kept between steps: the pair scan's view of `placed`.
     scan: Vec<Scan>,
+    /// Pairs touching at the start of the last step, by their colliders:
+    /// the normal their overlap was taken along and its ceiling (Lemma
+    /// 12.14), carried to this step.
+    touching: HashMap<(ColliderHandle, ColliderHandle), (Vector, Ceiling<f64>)>,
+    /// Scratch kept between steps: this step's `touching`.
+    touching_next: HashMap<(ColliderHandle, ColliderHandle), (Vector, Ceiling<f64>)>,
 }
 
 /// A collider as the pair scan reads it (compact: the scan reads every
@@ -270,6 +282,8 @@ impl CertifiedPass {
             motions: Vec::new(),
             hits: Vec::new(),
             scan: Vec::new(),
+            touching: HashMap::new(),
+            touching_next: HashMap::new(),
         }
     }
 
@@ -442,27 +456,69 @@ impl CertifiedPass {
                 };
                 let j = pb.body;
                 let (m1, m2) = (&pa.motion, &pb.motion);
+                let key = (pa.handle, pb.handle);
+                // Touching at the last step's start: first the closed form
+                // along that step's normal, under the carried ceiling (Lemma
+                // 12.14): a resting or sliding pair is decided with no cast.
+                let carried = self.touching.get(&key).copied();
+                if let Some((n, c)) = carried {
+                    if let Some(Touching {
+                        answer: PastContact::Never,
+                        normal,
+                        ceiling,
+                        cast,
+                        ..
+                    }) = self.dispatcher.touching(
+                        m1,
+                        ci.shape(),
+                        m2,
+                        cj.shape(),
+                        0.0,
+                        dt,
+                        Some(n),
+                        Some(c),
+                    ) {
+                        stats.checked += usize::from(!cast);
+                        stats.casts += usize::from(cast);
+                        self.touching_next.insert(key, (normal, ceiling));
+                        continue;
+                    }
+                }
                 stats.casts += 1;
                 // First without re-asking: a pair within the contact
-                // distance at the start is `past_contact`'s, and only when
-                // that cannot decide is it asked again (as rapier's casts
-                // are) and, still touching, left to parry's depths.
+                // distance at the start is the touching rule's (along the
+                // start's contact normal, the ceiling carried when the pair
+                // was held), and only when that cannot decide is it asked
+                // again (as rapier's casts are) and, still touching, left
+                // to parry's depths.
                 let first = self
                     .dispatcher
                     .cast_first(m1, ci.shape(), m2, cj.shape(), 0.0, dt);
                 let first = match first {
                     Ok(Some(hit)) if hit.time_of_impact <= 0.0 => {
-                        match self
-                            .dispatcher
-                            .past_contact(m1, ci.shape(), m2, cj.shape(), 0.0, dt)
-                        {
-                            PastContact::Never => continue,
-                            PastContact::At(t) => {
+                        let rule = self.dispatcher.touching(
+                            m1,
+                            ci.shape(),
+                            m2,
+                            cj.shape(),
+                            0.0,
+                            dt,
+                            None,
+                            carried.map(|(_, c)| c),
+                        );
+                        if let Some(t) = rule {
+                            if t.answer != PastContact::Unknown {
+                                self.touching_next.insert(key, (t.normal, t.ceiling));
+                            }
+                        }
+                        match rule.map(|t| t.answer) {
+                            Some(PastContact::Never) => continue,
+                            Some(PastContact::At(t)) => {
                                 stats.held += 1;
                                 hits.push((i, j, t));
                                 continue;
                             }
-                            PastContact::Unknown => self.dispatcher.cast_certified(
+                            _ => self.dispatcher.cast_certified(
                                 m1,
                                 ci.shape(),
                                 m2,
@@ -508,6 +564,9 @@ impl CertifiedPass {
             }
         }
         self.scan = scan;
+        // Pairs not met this step are forgotten.
+        core::mem::swap(&mut self.touching, &mut self.touching_next);
+        self.touching_next.clear();
         if !hits.is_empty() {
             self.stop_groups(bodies, colliders, &motions, &hits, &mut stats, dt);
         }
