@@ -559,7 +559,14 @@ fn ceilings_hold<T: Float>() {
             Shape::Convex(Convex::try_cuboid(ha.map(T::from_f64)).expect("a box")),
             Shape::Convex(Convex::try_cuboid(hb.map(T::from_f64)).expect("a box")),
         );
-        let r = past_contact_below(a, &ma, b, &mb, v3(n), last, &p).expect("two boxes");
+        // A quarter of the fresh ones with a floor of up to 3 d.
+        let floor = if case % 4 == 0 {
+            rng.range(0.0, 3.0) * d
+        } else {
+            0.0
+        };
+        let r = past_contact_below(a, &ma, b, &mb, v3(n), last, T::from_f64(floor), &p)
+            .expect("two boxes");
         let ceiling = r.ceiling.value.to_f64();
         assert!(
             r.overlap.to_f64() >= start,
@@ -573,7 +580,7 @@ fn ceilings_hold<T: Float>() {
             );
         } else {
             assert!(
-                ceiling <= start.max(0.0) + d + 5.0 * slack,
+                ceiling <= (start.max(0.0) + d).max(floor) + 5.0 * slack && ceiling >= floor,
                 "case {case}: ceiling {ceiling}, start {start}, overlap {:?}",
                 r.overlap
             );
@@ -622,10 +629,11 @@ fn a_ceiling_is_never_passed_before_the_answers_time_f32() {
 /// spinning about the normal, stepped 60 times as an engine's pass does:
 /// each step's motion from where the last one stopped it, stopped at the
 /// answer's time, the ceiling carried. The sampled overlap never passes
-/// the first step's ceiling: a held pair does not creep in. Without the
-/// carried ceiling (each step's own start plus `d`) it creeps by about
-/// `d / 2` a step and fails.
-fn a_held_pair_stays_below_its_ceiling<T: Float>() {
+/// the first step's ceiling (or the floor, an overlap always allowed, when
+/// that is more): a held pair does not creep in. Without the carried
+/// ceiling (each step's own start plus `d`) it creeps by about `d / 2` a
+/// step and fails.
+fn a_held_pair_stays_below_its_ceiling<T: Float>(floor: f64) {
     let d = 1e-3;
     let p = CaParams::<T>::default().with_contact_distance(T::from_f64(d));
     let slack = sampling_slack::<T>(d);
@@ -641,7 +649,8 @@ fn a_held_pair_stays_below_its_ceiling<T: Float>() {
     let mut holds = 0;
     for step in 0..60 {
         let m = motion::<T>(x, ([1.0, 0.0, 0.0], angle), v, w);
-        let r = past_contact_below(board, &m, wall, &still, v3(n), last, &p).expect("a board");
+        let r = past_contact_below(board, &m, wall, &still, v3(n), last, T::from_f64(floor), &p)
+            .expect("a board");
         let ceiling = *first.get_or_insert(r.ceiling.value.to_f64());
         let until = match r.answer {
             PastContact::Never => DT,
@@ -671,12 +680,14 @@ fn a_held_pair_stays_below_its_ceiling<T: Float>() {
 
 #[test]
 fn a_held_pair_does_not_creep_in_a_step_at_a_time_f64() {
-    a_held_pair_stays_below_its_ceiling::<f64>();
+    a_held_pair_stays_below_its_ceiling::<f64>(0.0);
+    a_held_pair_stays_below_its_ceiling::<f64>(3e-3);
 }
 
 #[test]
 fn a_held_pair_does_not_creep_in_a_step_at_a_time_f32() {
-    a_held_pair_stays_below_its_ceiling::<f32>();
+    a_held_pair_stays_below_its_ceiling::<f32>(0.0);
+    a_held_pair_stays_below_its_ceiling::<f32>(3e-3);
 }
 
 /// A ball spinning fast about its centre (or about a point near it), resting
@@ -717,7 +728,8 @@ fn a_spinning_ball_on_a_box<T: Float>() {
             [0.0; 3],
             rng.unit().map(|c| c * rng.range(0.0, 5e-3)),
         );
-        let res = past_contact_below(ball, &ma, cube, &mb, v3(n), None, &p).expect("a ball");
+        let res =
+            past_contact_below(ball, &ma, cube, &mb, v3(n), None, T::ZERO, &p).expect("a ball");
         let ceiling = res.ceiling.value.to_f64();
         let until = match res.answer {
             PastContact::Never => f64::INFINITY,

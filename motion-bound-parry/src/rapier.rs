@@ -77,7 +77,7 @@ use std::collections::HashMap;
 
 use motion_bound::ca::{CaParams, Ceiling};
 use parry3d_f64::bounding_volume::BoundingVolume;
-use rapier3d_f64::dynamics::{RigidBodyHandle, RigidBodySet};
+use rapier3d_f64::dynamics::{IntegrationParameters, RigidBodyHandle, RigidBodySet};
 use rapier3d_f64::geometry::{ColliderHandle, ColliderSet};
 use rapier3d_f64::math::{Pose, Vector};
 use rapier3d_f64::parry::query::NonlinearRigidMotion;
@@ -136,9 +136,50 @@ pub struct CertifiedPass {
     /// Pairs touching at the start of the last step, by their colliders:
     /// the normal their overlap was taken along and its ceiling (Lemma
     /// 12.14), carried to this step.
-    touching: HashMap<(ColliderHandle, ColliderHandle), (Vector, Ceiling<f64>)>,
+    touching: Touchings,
     /// Scratch kept between steps: this step's `touching`.
-    touching_next: HashMap<(ColliderHandle, ColliderHandle), (Vector, Ceiling<f64>)>,
+    touching_next: Touchings,
+    /// The overlap a touching pair may always reach (the solver's allowed
+    /// penetration; Lemma 12.14's floor).
+    allowed_overlap: f64,
+}
+
+/// The pairs touching at a step's start, by their colliders: the normal and
+/// the ceiling carried to the next step.
+type Touchings = HashMap<(ColliderHandle, ColliderHandle), (Vector, Ceiling<f64>), PairHash>;
+
+/// A hasher for pairs of collider handles (four `u32`s, not chosen by an
+/// adversary): a multiply and a rotate a word, where the default
+/// (`SipHash`) costs a fifth of the pass's step in a resting world.
+#[derive(Clone, Copy, Debug, Default)]
+struct PairHash;
+
+impl std::hash::BuildHasher for PairHash {
+    type Hasher = PairHasher;
+    fn build_hasher(&self) -> PairHasher {
+        PairHasher(0)
+    }
+}
+
+/// [`PairHash`]'s hasher.
+#[derive(Clone, Copy, Debug)]
+struct PairHasher(u64);
+
+impl std::hash::Hasher for PairHasher {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(u64::from(b));
+        }
+    }
+    fn write_u32(&mut self, x: u32) {
+        self.write_u64(u64::from(x));
+    }
+    fn write_u64(&mut self, x: u64) {
+        self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+    }
 }
 
 /// A collider as the pair scan reads it (compact: the scan reads every
@@ -163,12 +204,90 @@ struct Placed {
     velocity: parry3d_f64::math::Vector,
     /// The largest distance of the collider's points from the centre.
     radius: f64,
+    /// The largest distance from the centre of the points whose turn moves
+    /// the collider's extent along a direction: `radius`, or for a ball the
+    /// distance of its centre (a ball's extent does not turn about it).
+    turning: f64,
     motion: NonlinearRigidMotion,
     swept: parry3d_f64::bounding_volume::Aabb,
     handle: ColliderHandle,
 }
 
+/// The greatest of `dir . x` over `shape` at `pose` (a support map's
+/// support point, a mesh's vertices, a compound's parts), `None` for other
+/// shapes.
+fn extent(shape: &dyn parry3d_f64::shape::Shape, pose: &Pose, dir: Vector) -> Option<f64> {
+    let shape = Swept::see_through(shape);
+    if let Some(s) = shape.as_support_map() {
+        return Some(dir.dot(s.support_point(pose, dir)));
+    }
+    if let Some(mesh) = shape.as_trimesh() {
+        return mesh
+            .vertices()
+            .iter()
+            .map(|v| dir.dot(pose.transform_point(*v)))
+            .reduce(f64::max);
+    }
+    if let Some(c) = shape.as_compound() {
+        let mut best: Option<f64> = None;
+        for (p, s) in c.shapes() {
+            let e = extent(s.as_ref(), &(*pose * *p), dir)?;
+            best = Some(best.map_or(e, |b| b.max(e)));
+        }
+        return best;
+    }
+    None
+}
+
 impl Placed {
+    /// The certificate carried from the last step, checked for this one
+    /// without a cast (`proofs/12-shapes.md`, Lemma 12.14, "The pass's
+    /// check"): the overlap along `n` (this collider's greatest `n . x`
+    /// less `other`'s least) at the start, grown by at most
+    /// `((v_a - v_b) . n)^+ dt + min(|w_a| dt, 2) turning_a + min(|w_b| dt,
+    /// 2) turning_b` over the step, stays below the ceiling (the carried one
+    /// when the pair was held, else the start's overlap plus `d`, or
+    /// `floor`). Returns that ceiling (not held), or `None` when the check
+    /// does not certify it (the rule then decides with a cast). Rounding:
+    /// a few operations on numbers at most `scale`, covered by `1e-9 scale`
+    /// as in [`apart_over`](Self::apart_over).
+    #[allow(clippy::too_many_arguments)]
+    fn still_below(
+        &self,
+        sa: &dyn parry3d_f64::shape::Shape,
+        other: &Self,
+        sb: &dyn parry3d_f64::shape::Shape,
+        n: Vector,
+        last: Ceiling<f64>,
+        floor: f64,
+        d: f64,
+        dt: f64,
+    ) -> Option<Ceiling<f64>> {
+        let hi = extent(sa, &self.motion.start, n)?;
+        let lo = -extent(sb, &other.motion.start, -n)?;
+        let overlap = hi - lo;
+        let ceiling = if last.held {
+            last.value
+        } else {
+            (overlap + d).max(floor.max(0.0))
+        };
+        let turn = |m: &NonlinearRigidMotion| (m.angvel.length() * dt).min(2.0);
+        let growth = ((self.velocity - other.velocity).dot(n) * dt).max(0.0)
+            + (turn(&self.motion) * self.turning + turn(&other.motion) * other.turning)
+                * n.length();
+        let scale = self.centre.abs().max_element()
+            + other.centre.abs().max_element()
+            + self.radius
+            + other.radius
+            + (self.velocity.length() + other.velocity.length()) * dt
+            + ceiling.abs();
+        // NaN anywhere: not certified.
+        (overlap + growth + 1e-9 * scale < ceiling).then_some(Ceiling {
+            value: ceiling,
+            held: false,
+        })
+    }
+
     /// Whether the two colliders' balls about their motions' centres stay
     /// more than `reach` apart over `[0, dt]`: then no two points of them
     /// come within `reach` and the pair needs no cast. The centres' least
@@ -282,9 +401,25 @@ impl CertifiedPass {
             motions: Vec::new(),
             hits: Vec::new(),
             scan: Vec::new(),
-            touching: HashMap::new(),
-            touching_next: HashMap::new(),
+            touching: Touchings::default(),
+            touching_next: Touchings::default(),
+            allowed_overlap: IntegrationParameters::default().allowed_linear_error(),
         }
+    }
+
+    /// The overlap (along the contact normal) a pair touching at the start
+    /// of a step may always reach without being stopped: rapier's allowed
+    /// penetration, which its solver leaves resting bodies within
+    /// (`IntegrationParameters::allowed_linear_error`, `0.005` for a length
+    /// unit of one, the default here; [`step`](Self::step) takes the
+    /// world's). Beyond it a touching pair's overlap grows by at most the
+    /// contact distance a step, and not at all while the pass holds it
+    /// (`proofs/12-shapes.md`, Lemma 12.14). A negative or NaN value counts
+    /// as zero.
+    #[must_use]
+    pub fn with_allowed_overlap(mut self, overlap: f64) -> Self {
+        self.allowed_overlap = overlap;
+        self
     }
 
     /// Casting through `dispatcher` (a clone of the one given to the narrow
@@ -323,6 +458,7 @@ impl CertifiedPass {
     /// `world.step()`, [`clamp`](Self::clamp) over
     /// `world.integration_parameters.dt`. Call it instead of `world.step()`.
     pub fn step(&mut self, world: &mut PhysicsWorld) -> ClampStats {
+        self.allowed_overlap = world.integration_parameters.allowed_linear_error();
         self.record(&world.bodies);
         world.step();
         let dt = world.integration_parameters.dt;
@@ -406,6 +542,11 @@ impl CertifiedPass {
             // Every point of the collider stays within `radius` of its
             // motion's centre, which moves on a straight line.
             let radius = (ball.center - m.local_center).length() + ball.radius;
+            let turning = if Swept::see_through(c.shape()).as_ball().is_some() {
+                (ball.center - m.local_center).length()
+            } else {
+                radius
+            };
             let centre = m.start * m.local_center;
             let b = swept_box(&m, c.shape(), centre, radius, dt, contact_distance);
             self.placed.push(Placed {
@@ -413,6 +554,7 @@ impl CertifiedPass {
                 centre,
                 velocity: m.linvel,
                 radius,
+                turning,
                 motion: m,
                 swept: b,
                 handle,
@@ -462,6 +604,20 @@ impl CertifiedPass {
                 // 12.14): a resting or sliding pair is decided with no cast.
                 let carried = self.touching.get(&key).copied();
                 if let Some((n, c)) = carried {
+                    if let Some(ceiling) = pa.still_below(
+                        ci.shape(),
+                        pb,
+                        cj.shape(),
+                        n,
+                        c,
+                        self.allowed_overlap,
+                        contact_distance,
+                        dt,
+                    ) {
+                        stats.checked += 1;
+                        self.touching_next.insert(key, (n, ceiling));
+                        continue;
+                    }
                     if let Some(Touching {
                         answer: PastContact::Never,
                         normal,
@@ -477,6 +633,7 @@ impl CertifiedPass {
                         dt,
                         Some(n),
                         Some(c),
+                        self.allowed_overlap,
                     ) {
                         stats.checked += usize::from(!cast);
                         stats.casts += usize::from(cast);
@@ -505,6 +662,7 @@ impl CertifiedPass {
                             dt,
                             None,
                             carried.map(|(_, c)| c),
+                            self.allowed_overlap,
                         );
                         if let Some(t) = rule {
                             if t.answer != PastContact::Unknown {
@@ -769,6 +927,11 @@ mod tests {
             let m = NonlinearRigidMotion::new(start, v(&mut r, 0.5), linvel, angvel);
             let ball = shape.compute_local_bounding_sphere();
             let radius = (ball.center - m.local_center).length() + ball.radius;
+            let turning = if Swept::see_through(c.shape()).as_ball().is_some() {
+                (ball.center - m.local_center).length()
+            } else {
+                radius
+            };
             let centre = m.start * m.local_center;
             let boxed = swept_box(&m, shape.as_ref(), centre, radius, dt, reach);
             let mut union = Aabb::new_invalid();
@@ -800,6 +963,7 @@ mod tests {
             centre: v(r, 1.0),
             velocity: v(r, 150.0),
             radius: r.range(0.0, 0.5),
+            turning: 0.0,
             motion: NonlinearRigidMotion::constant_position(Pose::IDENTITY),
             swept: parry3d_f64::bounding_volume::Aabb::new_invalid(),
             handle: ColliderHandle::invalid(),

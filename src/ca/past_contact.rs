@@ -86,7 +86,7 @@ pub fn past_contact<T: Float>(
     normal: Vec3<T>,
     params: &CaParams<T>,
 ) -> Result<PastContact<T>, CaError> {
-    let r = past_contact_below(a, motion_a, b, motion_b, normal, None, params)?;
+    let r = past_contact_below(a, motion_a, b, motion_b, normal, None, T::ZERO, params)?;
     // Stateless: a pair already deeper than the contact distance is held at
     // the start (a caller that stops it at the answer's time every step,
     // with nothing carried, would otherwise let it creep in by `d` a step).
@@ -132,8 +132,11 @@ pub struct Below<T> {
 /// least) stay below a ceiling over the interval (`proofs/12-shapes.md`,
 /// Lemma 12.14)? The ceiling is `last`'s when the pair was held then
 /// ([`Ceiling::held`]): a pair stopped every step cannot creep in; otherwise
-/// the start's overlap (or zero) plus the contact distance: the overlap a
-/// solver left may grow by at most the contact distance over a step.
+/// the start's overlap (or zero) plus the contact distance, or `floor` when
+/// that is more: the overlap a solver left may grow by at most the contact
+/// distance over a step, and always up to `floor` (an engine's allowed
+/// penetration, which its solver leaves resting bodies within; `0` for
+/// none), which does not accumulate from step to step.
 ///
 /// First a closed form, no cast: the overlap grows by at most
 /// `((v_A - v_B) . n)^+ T + min(|w_A| T, 2) rho_A + min(|w_B| T, 2) rho_B`
@@ -164,7 +167,7 @@ pub struct Below<T> {
 ///     motion_bound::Isometry::try_new(motion_bound::Rotation::IDENTITY, Vec3::new(0.0, 0.0, -0.5))?,
 ///     Vec3::ZERO, Vec3::new(0.0, 1e-5, 0.0), dt)?;
 /// let n = Vec3::new(0.0, 0.0, -1.0);
-/// let r = past_contact_below(cube, &rest, floor, &base, n, None, &p)?;
+/// let r = past_contact_below(cube, &rest, floor, &base, n, None, 0.0, &p)?;
 /// assert_eq!(r.answer, PastContact::Never);
 /// assert!(!r.cast);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
@@ -176,6 +179,7 @@ pub fn past_contact_below<T: Float>(
     motion_b: &RigidMotion<T>,
     normal: Vec3<T>,
     last: Option<Ceiling<T>>,
+    floor: T,
     params: &CaParams<T>,
 ) -> Result<Below<T>, CaError> {
     params.validate()?;
@@ -213,7 +217,8 @@ pub fn past_contact_below<T: Float>(
     }
     let ceiling = match last {
         Some(c) if c.held => c.value,
-        _ => add_up(overlap.max_nan(T::ZERO), d),
+        // `floor` NaN or negative counts as zero.
+        _ => add_up(overlap.max_nan(T::ZERO), d).max_nan(floor.max_nan(T::ZERO)),
     };
     let held = |answer: PastContact<T>, cast: bool| Below {
         answer,

@@ -231,6 +231,7 @@ impl CertifiedDispatcher {
         end_time: Real,
         normal: Option<Vector>,
         last: Option<Ceiling<Real>>,
+        floor: Real,
     ) -> Option<Touching> {
         past_contact_below_parry(
             &self.cache,
@@ -243,6 +244,7 @@ impl CertifiedDispatcher {
             end_time,
             normal,
             last,
+            floor,
         )
     }
 }

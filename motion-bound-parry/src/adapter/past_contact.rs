@@ -57,7 +57,8 @@ pub(crate) struct Touching {
 /// The core's rule on parry's shapes: along `normal` when given, else
 /// along parry's contact normal at `start_time` (any direction is sound),
 /// with the ceiling `last` carried from the last step (kept when the pair
-/// was held then, else the start's overlap plus the contact distance).
+/// was held then, else the start's overlap plus the contact distance, or
+/// `floor` when that is more).
 /// `None` when nothing is decided before the rule runs (no contact normal,
 /// a shape or motion the conversion refuses).
 #[allow(clippy::too_many_arguments)]
@@ -72,6 +73,7 @@ pub(crate) fn past_contact_below_parry(
     end_time: Real,
     normal: Option<Vector>,
     last: Option<Ceiling<Real>>,
+    floor: Real,
 ) -> Option<Touching> {
     let span = end_time - start_time;
     // NaN or an empty interval: not decided.
@@ -101,7 +103,9 @@ pub(crate) fn past_contact_below_parry(
     let m2 = rigid_motion(motion2, start_time, end_time).ok()?;
     let below = b1
         .with_shape(|s1| {
-            b2.with_shape(|s2| past_contact_below(s1, &m1, s2, &m2, vec3(normal), last, params))
+            b2.with_shape(|s2| {
+                past_contact_below(s1, &m1, s2, &m2, vec3(normal), last, floor, params)
+            })
         })
         .ok()?
         .ok()?
@@ -138,7 +142,7 @@ pub(crate) fn past_contact_parry(
     end_time: Real,
 ) -> PastContact {
     let Some(t) = past_contact_below_parry(
-        cache, params, motion1, g1, motion2, g2, start_time, end_time, None, None,
+        cache, params, motion1, g1, motion2, g2, start_time, end_time, None, None, 0.0,
     ) else {
         return PastContact::Unknown;
     };
