@@ -246,8 +246,8 @@ impl Placed {
     /// less `other`'s least) at the start, grown by at most
     /// `((v_a - v_b) . n)^+ dt + min(|w_a| dt, 2) turning_a + min(|w_b| dt,
     /// 2) turning_b` over the step, stays below the ceiling (the carried one
-    /// when the pair was held, else the start's overlap plus `d`, or
-    /// `floor`). Returns that ceiling (not held), or `None` when the check
+    /// when the pair was held, else the start's overlap plus `d` but no
+    /// more than the carried one, or `floor` when that is more). Returns that ceiling (not held), or `None` when the check
     /// does not certify it (the rule then decides with a cast). Rounding:
     /// a few operations on numbers at most `scale`, covered by `1e-9 scale`
     /// as in [`apart_over`](Self::apart_over).
@@ -269,7 +269,7 @@ impl Placed {
         let ceiling = if last.held {
             last.value
         } else {
-            (overlap + d).max(floor.max(0.0))
+            (overlap.max(0.0) + d).min(last.value).max(floor.max(0.0))
         };
         let turn = |m: &NonlinearRigidMotion| (m.angvel.length() * dt).min(2.0);
         let growth = ((self.velocity - other.velocity).dot(n) * dt).max(0.0)

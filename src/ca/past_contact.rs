@@ -132,11 +132,12 @@ pub struct Below<T> {
 /// least) stay below a ceiling over the interval (`proofs/12-shapes.md`,
 /// Lemma 12.14)? The ceiling is `last`'s when the pair was held then
 /// ([`Ceiling::held`]): a pair stopped every step cannot creep in; otherwise
-/// the start's overlap (or zero) plus the contact distance, or `floor` when
-/// that is more: the overlap a solver left may grow by at most the contact
-/// distance over a step, and always up to `floor` (an engine's allowed
-/// penetration, which its solver leaves resting bodies within; `0` for
-/// none), which does not accumulate from step to step.
+/// the start's overlap (or zero) plus the contact distance, no more than
+/// `last`'s value when one is carried, or `floor` when that is more: the
+/// overlap a solver left may grow by at most the contact distance over a
+/// step and never past the ceiling carried (so no run of steps creeps in),
+/// and always up to `floor` (an engine's allowed penetration, which its
+/// solver leaves resting bodies within; `0` for none).
 ///
 /// First a closed form, no cast: the overlap grows by at most
 /// `((v_A - v_B) . n)^+ T + min(|w_A| T, 2) rho_A + min(|w_B| T, 2) rho_B`
@@ -217,8 +218,13 @@ pub fn past_contact_below<T: Float>(
     }
     let ceiling = match last {
         Some(c) if c.held => c.value,
-        // `floor` NaN or negative counts as zero.
-        _ => add_up(overlap.max_nan(T::ZERO), d).max_nan(floor.max_nan(T::ZERO)),
+        // Carried, not held: never above the last ceiling (above the
+        // floor), so that no run of steps creeps in; `floor` NaN or
+        // negative counts as zero.
+        Some(c) => add_up(overlap.max_nan(T::ZERO), d)
+            .min_nan(c.value)
+            .max_nan(floor.max_nan(T::ZERO)),
+        None => add_up(overlap.max_nan(T::ZERO), d).max_nan(floor.max_nan(T::ZERO)),
     };
     let held = |answer: PastContact<T>, cast: bool| Below {
         answer,

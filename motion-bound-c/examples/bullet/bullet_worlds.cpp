@@ -48,6 +48,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
+#include <utility>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -143,6 +145,13 @@ struct World {
     std::vector<std::unique_ptr<btRigidBody>> rbs;
     // The checker's objects (plain shapes at sampled poses).
     std::vector<std::unique_ptr<btCollisionObject>> probes;
+    // The pass's pairs touching at the last step's start: the normal their
+    // overlap is taken along and its ceiling (mb_past_contact_below).
+    struct Touching {
+        mb_vec3 normal;
+        mb_ceiling ceiling;
+    };
+    std::map<std::pair<size_t, size_t>, Touching> touching;
 
     World() { world.setGravity(btVector3(0, 0, 0)); }
     ~World() {
@@ -241,6 +250,25 @@ void build(World &w, const std::string &name, Rng &rng) {
                             0.9 * r);
             b.ball_radius = r;
         }
+    } else if (name == "stack") {
+        // Four columns of five cubes (half side 0.1) resting on a fixed
+        // floor under gravity, placed 1e-3 apart and jittered.
+        w.world.setGravity(btVector3(0, 0, btScalar(-9.81)));
+        w.add(new btBoxShape(btVector3(4, 4, 0.1f)), ours_box(4, 4, 0.1),
+              0, btTransform(btQuaternion::getIdentity(), btVector3(0, 0, btScalar(-0.1))),
+              btVector3(0, 0, 0), btVector3(0, 0, 0), 6, 0);
+        const double h = 0.1;
+        for (int col = 0; col < 4; col++) {
+            for (int level = 0; level < 5; level++) {
+                btVector3 at(btScalar((col % 2) * 0.6 - 0.3 + rng.in(-0.01, 0.01)),
+                             btScalar((col / 2) * 0.6 - 0.3 + rng.in(-0.01, 0.01)),
+                             btScalar(h + 1e-3 + level * (2 * h + 1e-3)));
+                btQuaternion turn(btVector3(0, 0, 1), btScalar(rng.in(-0.1, 0.1)));
+                w.add(new btBoxShape(btVector3(btScalar(h), btScalar(h), btScalar(h))),
+                      ours_box(h, h, h), 1, btTransform(turn, at), btVector3(0, 0, 0),
+                      btVector3(0, 0, 0), h * std::sqrt(3.0), 0.09);
+            }
+        }
     } else if (name == "plate") {
         // The plate [-5, 5]^2 in z = 0: two triangles, in both libraries.
         auto *tm = new btTriangleMesh();
@@ -279,6 +307,10 @@ void build(World &w, const std::string &name, Rng &rng) {
 // impact along the motion it made over the step.
 // Returns how many bodies it held (nearly) at their start pose.
 int certified_pass(World &w, const std::vector<btTransform> &before, const mb_params &p) {
+    // The overlap a touching pair may always reach (Lemma 12.14's floor):
+    // the checker's tolerance (Bullet's own stack settles 0.012 to 0.016
+    // deep, so a smaller floor holds resting boxes step after step).
+    const double floor = TOL;
     size_t n = w.bodies.size();
     std::vector<btTransform> after(n);
     std::vector<mb_motion *> motion(n, nullptr);
@@ -293,10 +325,63 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
                                             &motion[i]),
                   "still");
     }
+    std::map<std::pair<size_t, size_t>, World::Touching> touching_next;
     for (size_t i = 0; i < n; i++) {
         if (!w.bodies[i].dynamic) continue;
         for (size_t j = 0; j < n; j++) {
             if (j == i || (w.bodies[j].dynamic && j < i)) continue;
+            // Certified apart without a cast: each body stays within its
+            // reach of its origin, which moves on a straight line over the
+            // step (mb_motion_between turns about it); the origins' least
+            // distance in closed form (in double, from Bullet's exact
+            // floats; the margin covers the few roundings).
+            {
+                double d0[3], dv[3], dd = 0, d0v = 0;
+                for (int k = 0; k < 3; k++) {
+                    d0[k] = double(before[j].getOrigin()[k]) - double(before[i].getOrigin()[k]);
+                    dv[k] = double(after[j].getOrigin()[k]) - double(after[i].getOrigin()[k]) - d0[k];
+                    dd += dv[k] * dv[k];
+                    d0v += d0[k] * dv[k];
+                }
+                double f = dd > 0 ? std::clamp(-d0v / dd, 0.0, 1.0) : 0.0;
+                double least = std::sqrt((d0[0] + f * dv[0]) * (d0[0] + f * dv[0]) +
+                                         (d0[1] + f * dv[1]) * (d0[1] + f * dv[1]) +
+                                         (d0[2] + f * dv[2]) * (d0[2] + f * dv[2]));
+                double need = w.bodies[i].reach + w.bodies[j].reach + p.contact_distance;
+                if (least > need * (1 + 1e-9) + 1e-9) continue;
+            }
+            // A fixed body: its box (Bullet's, margin included) against the
+            // box of the moving body's ball along its origin's segment.
+            if (!w.bodies[j].dynamic) {
+                btVector3 lo, hi;
+                w.bodies[j].shape->getAabb(before[j], lo, hi);
+                bool meets = true;
+                double grow = w.bodies[i].reach + p.contact_distance + 1e-6;
+                for (int k = 0; k < 3; k++) {
+                    double a = double(before[i].getOrigin()[k]), b = double(after[i].getOrigin()[k]);
+                    if (std::min(a, b) - grow > double(hi[k]) || std::max(a, b) + grow < double(lo[k]))
+                        meets = false;
+                }
+                if (!meets) continue;
+            }
+            // Touching at the last step's start: first the rule along that
+            // step's normal with the ceiling carried (a resting or sliding
+            // pair is decided by its closed form, no cast).
+            auto key = std::make_pair(i, j);
+            auto carried = w.touching.find(key);
+            const mb_ceiling *last = nullptr;
+            if (carried != w.touching.end()) {
+                last = &carried->second.ceiling;
+                mb_below_report below;
+                check(mb_past_contact_below(w.bodies[i].ours, motion[i], w.bodies[j].ours,
+                                            motion[j], carried->second.normal, last, floor, &p,
+                                            &below),
+                      "past contact below");
+                if (below.outcome == MB_PAST_OUTCOME_NEVER) {
+                    touching_next[key] = {carried->second.normal, below.ceiling};
+                    continue;
+                }
+            }
             mb_report r;
             check(mb_time_of_impact(w.bodies[i].ours, motion[i], w.bodies[j].ours, motion[j], &p,
                                     &r),
@@ -309,20 +394,39 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
             double t = r.time;
             if (r.outcome == MB_OUTCOME_INITIAL_CONTACT && std::isfinite(r.normal.x)) {
                 // Within the contact distance at the start (a body stopped
-                // or resting there): does it go deeper along the start's
-                // normal? One cast against the half-space just past the
-                // separating plane (no hit when it slides along or leaves).
-                mb_past_report past;
-                check(mb_past_contact(w.bodies[i].ours, motion[i], w.bodies[j].ours, motion[j],
-                                      r.normal, &p, &past),
-                      "past contact");
+                // or resting there): does its overlap along the start's
+                // normal stay below the ceiling (the last one when held,
+                // else the start's plus the contact distance, or the
+                // floor)? One closed form or one cast against a half-space.
+                mb_below_report below;
+                check(mb_past_contact_below(w.bodies[i].ours, motion[i], w.bodies[j].ours,
+                                            motion[j], r.normal, last, floor, &p, &below),
+                      "past contact below");
                 if (std::getenv("BULLET_WORLDS_DEBUG"))
-                    std::fprintf(stderr, "  past contact: outcome %d time %g\n", int(past.outcome),
-                                 past.time);
-                if (past.outcome == MB_PAST_OUTCOME_NEVER) continue;
-                if (past.outcome == MB_PAST_OUTCOME_AT && past.time > 0) {
-                    stop[i] = std::min(stop[i], past.time);
-                    if (w.bodies[j].dynamic) stop[j] = std::min(stop[j], past.time);
+                    std::fprintf(stderr, "  past contact: outcome %d time %g\n",
+                                 int(below.outcome), below.time);
+                if (below.outcome != MB_PAST_OUTCOME_UNDECIDED)
+                    touching_next[key] = {r.normal, below.ceiling};
+                if (below.outcome == MB_PAST_OUTCOME_NEVER) continue;
+                if (below.outcome == MB_PAST_OUTCOME_AT) {
+                    stop[i] = std::min(stop[i], below.time);
+                    if (w.bodies[j].dynamic) stop[j] = std::min(stop[j], below.time);
+                    continue;
+                }
+            } else if (r.outcome == MB_OUTCOME_INITIAL_CONTACT && carried != w.touching.end()) {
+                // Overlapping (no normal in the report), carried from the
+                // last step: the rule answered a time along that step's
+                // normal (undecided: both bodies turning fast; then the
+                // depths below).
+                mb_below_report below;
+                check(mb_past_contact_below(w.bodies[i].ours, motion[i], w.bodies[j].ours,
+                                            motion[j], carried->second.normal, last, floor, &p,
+                                            &below),
+                      "past contact below");
+                if (below.outcome == MB_PAST_OUTCOME_AT) {
+                    touching_next[key] = {carried->second.normal, below.ceiling};
+                    stop[i] = std::min(stop[i], below.time);
+                    if (w.bodies[j].dynamic) stop[j] = std::min(stop[j], below.time);
                     continue;
                 }
             }
@@ -351,6 +455,7 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
             if (w.bodies[j].dynamic) stop[j] = std::min(stop[j], t);
         }
     }
+    w.touching.swap(touching_next);
     int held = 0;
     for (size_t i = 0; i < n; i++) {
         held += w.bodies[i].dynamic && stop[i] < 1e-3 * DT;
@@ -423,8 +528,12 @@ Verdict judge(World &w, const std::vector<btTransform> &before, const std::vecto
                                  i, j, int(crossed), d_start, d_end, d_max, c0.x(), c0.y(), c0.z(),
                                  c1.x(), c1.y(), c1.z());
             }
-            else if (d_end > TOL)
+            else if (d_end > TOL) {
                 v.late = true;
+                if (std::getenv("BULLET_WORLDS_DEBUG"))
+                    std::fprintf(stderr, "late: pair (%zu, %zu) depth start %g end %g\n", i, j,
+                                 d_start, d_end);
+            }
         }
     }
     return v;
@@ -441,6 +550,8 @@ Tally run(const std::string &name, int launches, bool ours) {
     Tally t;
     mb_params p = mb_params_default();
     p.contact_distance = 1e-3;
+    if (std::getenv("BULLET_WORLDS_DEBUG"))
+        std::fprintf(stderr, "run %s, %s\n", name.c_str(), ours ? "ours" : "bullet");
     for (int launch = 0; launch < launches; launch++) {
         Rng rng(1000 * (unsigned long long)(launch + 1) + name.size());
         World w;
@@ -477,12 +588,12 @@ int main(int argc, char **argv) {
     // An optional second argument runs one world (for profiling).
     const char *only = argc > 2 ? argv[2] : nullptr;
     if (launches <= 0) {
-        std::fprintf(stderr, "usage: bullet_worlds [launches > 0] [board|bat|bullets|plate]\n");
+        std::fprintf(stderr, "usage: bullet_worlds [launches > 0] [board|bat|bullets|plate|stack]\n");
         return 2;
     }
     std::printf("%d launches x %d steps per world, dt = 1/60, tolerance %.3g\n", launches, STEPS,
                 TOL);
-    for (const char *name : {"board", "bat", "bullets", "plate"}) {
+    for (const char *name : {"board", "bat", "bullets", "plate", "stack"}) {
         if (only && std::strcmp(only, name) != 0) continue;
         Tally b = run(name, launches, false);
         Tally o = run(name, launches, true);
