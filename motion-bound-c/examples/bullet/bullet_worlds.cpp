@@ -303,6 +303,48 @@ void build(World &w, const std::string &name, Rng &rng) {
     }
 }
 
+// The least distance between the segments [p0, p1] and [q0, q1] (Ericson,
+// Real-Time Collision Detection, 5.1.9), in double.
+double segment_distance(const btVector3 &p0, const btVector3 &p1, const btVector3 &q0,
+                        const btVector3 &q1) {
+    double d1[3], d2[3], r[3];
+    for (int k = 0; k < 3; k++) {
+        d1[k] = double(p1[k]) - double(p0[k]);
+        d2[k] = double(q1[k]) - double(q0[k]);
+        r[k] = double(p0[k]) - double(q0[k]);
+    }
+    auto dot = [](const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
+    double s = 0, t = 0;
+    if (a <= 1e-300 && e <= 1e-300) {
+        s = t = 0;
+    } else if (a <= 1e-300) {
+        t = std::clamp(f / e, 0.0, 1.0);
+    } else {
+        double c = dot(d1, r);
+        if (e <= 1e-300) {
+            s = std::clamp(-c / a, 0.0, 1.0);
+        } else {
+            double b = dot(d1, d2), denom = a * e - b * b;
+            s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+            t = (b * s + f) / e;
+            if (t < 0) {
+                t = 0;
+                s = std::clamp(-c / a, 0.0, 1.0);
+            } else if (t > 1) {
+                t = 1;
+                s = std::clamp((b - c) / a, 0.0, 1.0);
+            }
+        }
+    }
+    double x = 0;
+    for (int k = 0; k < 3; k++) {
+        double d = r[k] + d1[k] * s - d2[k] * t;
+        x += d * d;
+    }
+    return std::sqrt(x);
+}
+
 // The certified pass: every dynamic body moved back to its earliest time of
 // impact along the motion it made over the step.
 // Returns how many bodies it held (nearly) at their start pose.
@@ -326,29 +368,33 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
                   "still");
     }
     std::map<std::pair<size_t, size_t>, World::Touching> touching_next;
+    // Dynamic bodies of pairs examined (not apart by their segments) stop
+    // together, at their group's earliest time: each pair's answer holds
+    // along both motions up to it (a body stopped alone while the other
+    // moved on would leave that pair uncertified).
+    std::vector<size_t> group(n);
+    for (size_t k = 0; k < n; k++) group[k] = k;
+    auto root = [&](size_t k) {
+        while (group[k] != k) k = group[k] = group[group[k]];
+        return k;
+    };
+    auto link = [&](size_t a, size_t b) { group[root(a)] = root(b); };
     for (size_t i = 0; i < n; i++) {
         if (!w.bodies[i].dynamic) continue;
         for (size_t j = 0; j < n; j++) {
             if (j == i || (w.bodies[j].dynamic && j < i)) continue;
-            // Certified apart without a cast: each body stays within its
-            // reach of its origin, which moves on a straight line over the
-            // step (mb_motion_between turns about it); the origins' least
-            // distance in closed form (in double, from Bullet's exact
-            // floats; the margin covers the few roundings).
-            {
-                double d0[3], dv[3], dd = 0, d0v = 0;
-                for (int k = 0; k < 3; k++) {
-                    d0[k] = double(before[j].getOrigin()[k]) - double(before[i].getOrigin()[k]);
-                    dv[k] = double(after[j].getOrigin()[k]) - double(after[i].getOrigin()[k]) - d0[k];
-                    dd += dv[k] * dv[k];
-                    d0v += d0[k] * dv[k];
-                }
-                double f = dd > 0 ? std::clamp(-d0v / dd, 0.0, 1.0) : 0.0;
-                double least = std::sqrt((d0[0] + f * dv[0]) * (d0[0] + f * dv[0]) +
-                                         (d0[1] + f * dv[1]) * (d0[1] + f * dv[1]) +
-                                         (d0[2] + f * dv[2]) * (d0[2] + f * dv[2]));
+            // Certified apart without a cast, wherever either stops: each
+            // body stays within its reach of its origin, which moves along a
+            // segment over the step (mb_motion_between turns about it); the
+            // segments' least distance in closed form (in double, from
+            // Bullet's exact floats; the margin covers its roundings).
+            if (w.bodies[j].dynamic) {
+                double least = segment_distance(before[i].getOrigin(), after[i].getOrigin(),
+                                                before[j].getOrigin(), after[j].getOrigin());
                 double need = w.bodies[i].reach + w.bodies[j].reach + p.contact_distance;
                 if (least > need * (1 + 1e-9) + 1e-9) continue;
+                // Examined: the two stop together (below).
+                link(i, j);
             }
             // A fixed body: its box (Bullet's, margin included) against the
             // box of the moving body's ball along its origin's segment.
@@ -377,6 +423,12 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
                                             motion[j], carried->second.normal, last, floor, &p,
                                             &below),
                       "past contact below");
+                if (std::getenv("BULLET_WORLDS_DEBUG"))
+                    std::fprintf(stderr,
+                                 "carried (%zu, %zu): outcome %d time %g overlap %g ceiling %g "
+                                 "held %u cast %u\n",
+                                 i, j, int(below.outcome), below.time, below.overlap,
+                                 below.ceiling.value, below.ceiling.held, below.cast);
                 if (below.outcome == MB_PAST_OUTCOME_NEVER) {
                     touching_next[key] = {carried->second.normal, below.ceiling};
                     continue;
@@ -456,6 +508,9 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
         }
     }
     w.touching.swap(touching_next);
+    std::vector<double> first(n, DT);
+    for (size_t k = 0; k < n; k++) first[root(k)] = std::min(first[root(k)], stop[k]);
+    for (size_t k = 0; k < n; k++) stop[k] = first[root(k)];
     int held = 0;
     for (size_t i = 0; i < n; i++) {
         held += w.bodies[i].dynamic && stop[i] < 1e-3 * DT;
@@ -568,6 +623,8 @@ Tally run(const std::string &name, int launches, bool ours) {
             t.step_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             t.steps++;
             for (size_t i = 0; i < n; i++) after[i] = w.bodies[i].rb->getWorldTransform();
+            // BULLET_WORLDS_NO_CHECK=1: no checker (for instruction counts).
+            if (std::getenv("BULLET_WORLDS_NO_CHECK")) continue;
             Verdict v = judge(w, before, after);
             if (v.tunnelled && ours && std::getenv("BULLET_WORLDS_DEBUG"))
                 std::fprintf(stderr, "  %s launch %d step %d\n", name.c_str(), launch, s);
@@ -585,23 +642,26 @@ Tally run(const std::string &name, int launches, bool ours) {
 
 int main(int argc, char **argv) {
     int launches = argc > 1 ? std::atoi(argv[1]) : 40;
-    // An optional second argument runs one world (for profiling).
+    // An optional second argument runs one world, a third one setup
+    // ("bullet" or "ours"; for profiling).
     const char *only = argc > 2 ? argv[2] : nullptr;
+    const char *mode = argc > 3 ? argv[3] : nullptr;
     if (launches <= 0) {
-        std::fprintf(stderr, "usage: bullet_worlds [launches > 0] [board|bat|bullets|plate|stack]\n");
+        std::fprintf(stderr, "usage: bullet_worlds [launches > 0] [board|bat|bullets|plate|stack] [bullet|ours]\n");
         return 2;
     }
     std::printf("%d launches x %d steps per world, dt = 1/60, tolerance %.3g\n", launches, STEPS,
                 TOL);
     for (const char *name : {"board", "bat", "bullets", "plate", "stack"}) {
         if (only && std::strcmp(only, name) != 0) continue;
-        Tally b = run(name, launches, false);
-        Tally o = run(name, launches, true);
+        bool both = !mode;
+        Tally b = both || std::strcmp(mode, "bullet") == 0 ? run(name, launches, false) : Tally();
+        Tally o = both || std::strcmp(mode, "ours") == 0 ? run(name, launches, true) : Tally();
         std::printf(
             "world %s: tunnelled bullet %d ours %d, late bullet %d ours %d, ms per step bullet %.4f "
             "ours %.4f\n",
-            name, b.tunnelled, o.tunnelled, b.late, o.late, 1e3 * b.step_seconds / b.steps,
-            1e3 * o.step_seconds / o.steps);
+            name, b.tunnelled, o.tunnelled, b.late, o.late,
+            1e3 * b.step_seconds / std::max(b.steps, 1L), 1e3 * o.step_seconds / std::max(o.steps, 1L));
         // A body the pass holds at its start pose step after step would also
         // count 0: how many launches end that way.
         std::printf("  (ours held a body at its start pose in the last step in %d of %d launches)\n",
