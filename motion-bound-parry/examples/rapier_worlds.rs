@@ -7,7 +7,7 @@
 //!
 //! Each world is launched `--launches` times (default 20; each launch a
 //! seed: random start poses, velocities and spins), each launch stepped 150
-//! times at `dt = 1/60` with gravity off and CCD enabled on every dynamic
+//! times at `dt = 1/60` with gravity off (but in `stack`) and CCD enabled on every dynamic
 //! body, twice with the same launches:
 //!
 //! - **default**: rapier's narrow phase with parry's dispatcher, plain
@@ -841,7 +841,7 @@ fn main() {
     let only_mode: Option<String> = args.value("--only");
     args.finish();
     println!(
-        "{launches} launches x {steps} steps per world, dt 1/60, gravity off, CCD on, TOL {TOL}"
+        "{launches} launches x {steps} steps per world, dt 1/60, gravity off (stack: on), CCD on, TOL {TOL}"
     );
     let worlds: Vec<World> = World::ALL
         .into_iter()

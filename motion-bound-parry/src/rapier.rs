@@ -20,18 +20,28 @@
 //! on that very motion, at the group's earliest certified time of impact.
 //! Velocities are kept: the next step's contact solver resolves the
 //! contact. A pair within the contact distance at the start (its first
-//! cast is not asked again with a smaller one) is a resting contact, left
-//! to the solver, unless the body goes deeper: the first time it may reach more
-//! than the contact distance past the plane that separated the pair at the
-//! start (certified, a cast against that half-space: a body the solver
-//! pushes on into a thin wall is stopped there, one sliding along the wall
-//! or leaving it is not), and its group is stopped then. When the other
-//! body rotates too, or a shape's extent is not computed (heightfields,
-//! polylines, voxels), the pair is asked again with a smaller contact
-//! distance, and still touching, the rule is parry's static penetration
-//! depth at both ends (deeper at the end by more than the contact
-//! distance: the bodies are held at their start poses); that does not see
-//! a body pass right through a thin rotating body within one step.
+//! cast is not asked again with a smaller one) is a resting or sliding
+//! contact, left to the solver (`proofs/12-shapes.md`, Lemma 12.14): its
+//! overlap along the start's contact normal may reach a ceiling, the
+//! start's overlap plus the contact distance or the solver's allowed
+//! penetration ([`with_allowed_overlap`](CertifiedPass::with_allowed_overlap))
+//! when that is more, and its group is stopped at the first time it may
+//! pass it (certified, a cast against the half-space at the ceiling: a
+//! body the solver pushes on into a thin wall is stopped there, one
+//! sliding along the wall or leaving it is not). The pass carries each
+//! touching pair's normal and ceiling to the next step: a pair it held
+//! keeps its ceiling, and no pair's ceiling rises above the one carried
+//! (beyond the allowed penetration), so nothing creeps in a step at a time;
+//! and a pair whose overlap, grown by a bound of its approach over the step
+//! (its relative speed along the normal and both turns), stays below the
+//! ceiling is decided with two support points, no cast. When both bodies
+//! turn too fast for the rule, or a shape's extent is not computed
+//! (heightfields, polylines, voxels), the pair is asked again with a
+//! smaller contact distance, and still touching, the rule is parry's
+//! static penetration depth at both ends (deeper at the end by more than
+//! the contact distance: the bodies are held at their start poses); that
+//! does not see a body pass right through a thin rotating body within one
+//! step.
 //! A swept body stopped early stands at its stop pose for the rest of the
 //! step: every swept body still moving then is cast against it there, and
 //! stopped at the hit, in rounds (`proofs/12-shapes.md`, Lemma 12.8).
@@ -41,7 +51,9 @@
 //! cost: each collider's motion and swept box once per step, then one cast
 //! per pair of colliders whose swept boxes meet, unless the balls bounding
 //! them about their motions' centres (which move on straight lines) never
-//! come within the contact distance ([`ClampStats::apart`], a closed form).
+//! come within the contact distance ([`ClampStats::apart`], a closed form),
+//! or the pair touched at the last step's start and its certificate still
+//! covers this step ([`ClampStats::checked`]).
 //! The pairs are found by a scan of every collider per CCD collider: for
 //! tens of fast bodies, not for thousands.
 //!

@@ -4,7 +4,7 @@
 //
 // Each world is launched N times (argument 1, default 40; each launch a seed:
 // random start poses, velocities and spins) and stepped 150 times at
-// dt = 1/60 with gravity off, twice with the same launches (argument 2, a
+// dt = 1/60 with gravity off (on in stack), twice with the same launches (argument 2, a
 // world's name, runs that world alone):
 //
 // - bullet: Bullet's own CCD on every dynamic body (setCcdMotionThreshold,
@@ -12,25 +12,35 @@
 // - ours: the same, and after each step the certified pass: each dynamic
 //   body's actual motion over the step (its pose before and after
 //   stepSimulation, as a constant-velocity motion: mb_motion_between) cast
-//   against every other body with mb_time_of_impact, and every body moved
-//   back to its pose on that motion at the earliest time of impact of its
-//   pairs. A pair already within the contact distance at the start (a body
-//   stopped there by the last step, or resting against the other) is cast
-//   once more, against the half-space just past the plane that separated
-//   it at the start (mb_past_contact, along the report's normal): no hit
-//   when it slides along or leaves, else the first time it may go deeper. Only when that is not
-//   decided (both bodies rotating) or the pair is already deeper than the
-//   contact distance is it asked again with a contact distance half its
-//   gap, so that a corner cutting in and out within the step is still
-//   found, and a pair touching exactly held at the start if the step
-//   leaves it deeper. The pass's time is counted in the step's. Set
-//   BULLET_WORLDS_DEBUG=1 to print every cast and every tunnelled step.
+//   against every other body with mb_time_of_impact, unless certified apart
+//   first (the segments its origin and the other's sweep, grown by their
+//   reaches: apart wherever either stops; a fixed body by its box), and the
+//   bodies moved back to their poses on those motions at the earliest time
+//   of impact of their group (the dynamic bodies of the pairs examined stop
+//   together). A pair within the contact distance at the start (a body
+//   stopped there by the last step, or resting on the other) asks
+//   mb_past_contact_below along the report's normal (proofs/12-shapes.md,
+//   Lemma 12.14): its overlap along that normal may reach a ceiling (the
+//   start's plus the contact distance, or the floor, the checker's
+//   tolerance, when that is more), and the pair is stopped at the first
+//   time it may pass it. The pass carries each touching pair's normal and
+//   ceiling to the next step and asks that first: a resting or sliding pair
+//   is decided by the closed form (no cast), a held pair keeps its ceiling,
+//   and no ceiling rises above the one carried, so nothing creeps in. Only
+//   when the rule cannot decide (both bodies turning fast) is the pair asked
+//   again with a contact distance half its gap, and touching exactly held
+//   at the start if the step leaves it deeper. The pass's time is counted
+//   in the step's. Set BULLET_WORLDS_DEBUG=1 to print every cast and every
+//   tunnelled or late step; BULLET_WORLDS_NO_CHECK=1 skips the checker (for
+//   instruction counts; then a third argument, bullet or ours, runs one
+//   setup).
 //
 // Worlds: board (a thin board flying and spinning fast at a thin wall), bat
 // (a long thin capsule spinning in place beside a thin wall: pure rotation),
 // bullets (two small balls head-on at 15 to 60 m/s each), plate (a cube,
 // for motion-bound a triangle mesh, falling at 20 to 150 m/s and spinning
-// onto a triangle-mesh plate of zero thickness).
+// onto a triangle-mesh plate of zero thickness), stack (four columns of five
+// cubes resting on a floor under gravity, placed 1e-3 apart).
 //
 // The checker does not use the certified cast: for each step and each pair
 // (a dynamic body and any other), the recorded poses before and after the
