@@ -426,9 +426,10 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
             auto key = std::make_pair(i, j);
             auto carried = w.touching.find(key);
             const mb_ceiling *last = nullptr;
+            mb_below_report carried_below;
             if (carried != w.touching.end()) {
                 last = &carried->second.ceiling;
-                mb_below_report below;
+                mb_below_report &below = carried_below;
                 check(mb_past_contact_below(w.bodies[i].ours, motion[i], w.bodies[j].ours,
                                             motion[j], carried->second.normal, last, floor, &p,
                                             &below),
@@ -454,39 +455,30 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
                              r.normal.z);
             if (r.outcome == MB_OUTCOME_SEPARATED) continue;
             double t = r.time;
-            if (r.outcome == MB_OUTCOME_INITIAL_CONTACT && std::isfinite(r.normal.x)) {
-                // Within the contact distance at the start (a body stopped
-                // or resting there): does its overlap along the start's
-                // normal stay below the ceiling (the last one when held,
-                // else the start's plus the contact distance, or the
-                // floor)? One closed form or one cast against a half-space.
-                mb_below_report below;
-                check(mb_past_contact_below(w.bodies[i].ours, motion[i], w.bodies[j].ours,
-                                            motion[j], r.normal, last, floor, &p, &below),
-                      "past contact below");
+            // Touching at the start: the rule along the carried normal, or
+            // for a pair apart (within the contact distance) along the
+            // report's normal, the direction of its closest points. An
+            // overlapping pair's report has no trustworthy normal: along a
+            // direction it overlaps much more than its depth, a ceiling
+            // means nothing; such a pair not carried goes to the depths
+            // below.
+            bool carried_here = carried != w.touching.end();
+            bool apart_normal = r.outcome == MB_OUTCOME_INITIAL_CONTACT && r.distance > 0 &&
+                                std::isfinite(r.normal.x);
+            if (r.outcome == MB_OUTCOME_INITIAL_CONTACT && (carried_here || apart_normal)) {
+                mb_vec3 normal = carried_here ? carried->second.normal : r.normal;
+                mb_below_report below = carried_below;
+                if (!carried_here)
+                    check(mb_past_contact_below(w.bodies[i].ours, motion[i], w.bodies[j].ours,
+                                                motion[j], normal, last, floor, &p, &below),
+                          "past contact below");
                 if (std::getenv("BULLET_WORLDS_DEBUG"))
                     std::fprintf(stderr, "  past contact: outcome %d time %g\n",
                                  int(below.outcome), below.time);
                 if (below.outcome != MB_PAST_OUTCOME_UNDECIDED)
-                    touching_next[key] = {r.normal, below.ceiling};
+                    touching_next[key] = {normal, below.ceiling};
                 if (below.outcome == MB_PAST_OUTCOME_NEVER) continue;
                 if (below.outcome == MB_PAST_OUTCOME_AT) {
-                    stop[i] = std::min(stop[i], below.time);
-                    if (w.bodies[j].dynamic) stop[j] = std::min(stop[j], below.time);
-                    continue;
-                }
-            } else if (r.outcome == MB_OUTCOME_INITIAL_CONTACT && carried != w.touching.end()) {
-                // Overlapping (no normal in the report), carried from the
-                // last step: the rule answered a time along that step's
-                // normal (undecided: both bodies turning fast; then the
-                // depths below).
-                mb_below_report below;
-                check(mb_past_contact_below(w.bodies[i].ours, motion[i], w.bodies[j].ours,
-                                            motion[j], carried->second.normal, last, floor, &p,
-                                            &below),
-                      "past contact below");
-                if (below.outcome == MB_PAST_OUTCOME_AT) {
-                    touching_next[key] = {carried->second.normal, below.ceiling};
                     stop[i] = std::min(stop[i], below.time);
                     if (w.bodies[j].dynamic) stop[j] = std::min(stop[j], below.time);
                     continue;
