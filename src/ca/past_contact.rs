@@ -8,15 +8,21 @@
 //! or sliding along, a surface it was stopped at is in that state every
 //! step; asking the cast again with a smaller contact distance costs a full
 //! query each step (many iterations for a spinning body). [`past_contact`]
-//! answers the question that matters instead, with one cast against a
-//! half-space (usually one iteration): with `n` the given direction (the
-//! start's contact normal from A to B; any nonzero vector is sound), `hi`
-//! the greatest of `n . x` over A and `lo` the least over B at the start,
-//! the half-space `n . x >= max(hi, lo) + 3/2 d` (`d` the contact distance),
-//! carried along by B's translation, is cast against A's motion.
-//! Until the cast's time, A's extent along `n` beyond B's least grows by
-//! less than `d` over what it was at the start (`proofs/12-shapes.md`,
-//! Lemma 12.11), so nothing thicker than that along `n` is passed through.
+//! answers the question that matters instead, with a closed form or one
+//! cast against a half-space (usually one iteration): with `n` the given
+//! direction (the start's contact normal from A to B; any nonzero vector is
+//! sound), the **overlap** is A's greatest `n . x` less B's least. Until
+//! the answer's time it stays below a ceiling, the start's overlap (or
+//! zero) plus the contact distance `d` (`proofs/12-shapes.md`, Lemmas 12.11
+//! and 12.14), so nothing thicker than that along `n` is passed through:
+//! first the closed form of how much the overlap may grow over the interval
+//! (the relative speed along `n`, each body's turn times its reach), and
+//! when that does not decide, the half-space at the ceiling, carried by the
+//! body that turns less (lowered by what that turn may move), cast against
+//! the other. [`past_contact_below`] is the same rule with a ceiling carried
+//! from step to step by an engine's pass (a held pair keeps it, so nothing
+//! creeps in a step at a time) and a floor, the engine's allowed
+//! penetration.
 
 use crate::ca::{placement_error, time_of_impact, AnyPair, CaError, CaOutcome, CaParams, Shape};
 use crate::rounding::{add_up, mul_up};
@@ -173,6 +179,7 @@ pub struct Below<T> {
 /// assert!(!r.cast);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
+#[allow(clippy::too_many_arguments)] // the pair, the direction, what is carried
 pub fn past_contact_below<T: Float>(
     a: Shape<'_, T>,
     motion_a: &RigidMotion<T>,
@@ -250,7 +257,8 @@ pub fn past_contact_below<T: Float>(
     // Room below the ceiling at the start; none: held at the start (or
     // undecided, when it is the carrier's turn that takes it).
     let room = ((ceiling - overlap).next_down() - charge).next_down();
-    if !(room > T::ZERO) {
+    // NaN too: no room.
+    if room.partial_cmp(&T::ZERO) != Some(core::cmp::Ordering::Greater) {
         let answer = if charge > T::ZERO {
             PastContact::Undecided
         } else {
