@@ -518,25 +518,7 @@ pub unsafe extern "C" fn mb_past_contact(
                 read_in(params, "params")?,
             )
         };
-        let n = normal.checked("normal")?;
-        if n == Vec3::ZERO {
-            return Err(Failure::new(
-                MbStatus::InvalidInput,
-                "normal: the zero vector (give the contact normal from A to B)",
-            ));
-        }
-        let p = self::params(p)?;
-        let (pa, pb) = (sa.data.prepare(), sb.data.prepare());
-        let (pa, pb) = (
-            pa.map_err(|e| pair_failure(e.into(), ""))?,
-            pb.map_err(|e| pair_failure(e.into(), ""))?,
-        );
-        let answer = past_contact(pa.shape(), &ma.motion, pb.shape(), &mb.motion, n, &p).map_err(
-            |e| match e {
-                CaError::Input(e) => Failure::new(MbStatus::InvalidInput, format!("normal: {e}")),
-                e => pair_failure(e, ""),
-            },
-        )?;
+        let answer = touching_rule((sa, ma, sb, mb), normal, p, past_contact)?;
         let report = match answer {
             PastContact::Never => MbPastReport {
                 outcome: MbPastOutcome::Never,
@@ -553,6 +535,41 @@ pub unsafe extern "C" fn mb_past_contact(
         };
         // SAFETY: `out` is NULL or writable (this function's contract).
         unsafe { write_out(out, report, "out") }
+    })
+}
+
+/// What `mb_past_contact` and `mb_past_contact_below` share once their
+/// handles are read: the normal checked (zero or non-finite: named), the
+/// parameters, both shapes prepared, and `rule` run with its error named.
+fn touching_rule<R>(
+    (sa, ma, sb, mb): (&MbShape, &MbMotion, &MbShape, &MbMotion),
+    normal: MbVec3,
+    p: Option<MbParams>,
+    rule: impl FnOnce(
+        motion_bound::ca::Shape<'_, f64>,
+        &RigidMotion<f64>,
+        motion_bound::ca::Shape<'_, f64>,
+        &RigidMotion<f64>,
+        Vec3<f64>,
+        &CaParams<f64>,
+    ) -> Result<R, CaError>,
+) -> Res<R> {
+    let n = normal.checked("normal")?;
+    if n == Vec3::ZERO {
+        return Err(Failure::new(
+            MbStatus::InvalidInput,
+            "normal: the zero vector (give the contact normal from A to B)",
+        ));
+    }
+    let p = self::params(p)?;
+    let (pa, pb) = (sa.data.prepare(), sb.data.prepare());
+    let (pa, pb) = (
+        pa.map_err(|e| pair_failure(e.into(), ""))?,
+        pb.map_err(|e| pair_failure(e.into(), ""))?,
+    );
+    rule(pa.shape(), &ma.motion, pb.shape(), &mb.motion, n, &p).map_err(|e| match e {
+        CaError::Input(e) => Failure::new(MbStatus::InvalidInput, format!("normal: {e}")),
+        e => pair_failure(e, ""),
     })
 }
 
@@ -647,36 +664,12 @@ pub unsafe extern "C" fn mb_past_contact_below(
                 read_in(params, "params")?,
             )
         };
-        let n = normal.checked("normal")?;
-        if n == Vec3::ZERO {
-            return Err(Failure::new(
-                MbStatus::InvalidInput,
-                "normal: the zero vector (give the contact normal from A to B)",
-            ));
-        }
-        let p = self::params(p)?;
-        let (pa, pb) = (sa.data.prepare(), sb.data.prepare());
-        let (pa, pb) = (
-            pa.map_err(|e| pair_failure(e.into(), ""))?,
-            pb.map_err(|e| pair_failure(e.into(), ""))?,
-        );
         let last = last.map(|c| Ceiling {
             value: c.value,
             held: c.held != 0,
         });
-        let below = past_contact_below(
-            pa.shape(),
-            &ma.motion,
-            pb.shape(),
-            &mb.motion,
-            n,
-            last,
-            floor,
-            &p,
-        )
-        .map_err(|e| match e {
-            CaError::Input(e) => Failure::new(MbStatus::InvalidInput, format!("normal: {e}")),
-            e => pair_failure(e, ""),
+        let below = touching_rule((sa, ma, sb, mb), normal, p, |a, ma, b, mb, n, p| {
+            past_contact_below(a, ma, b, mb, n, last, floor, p)
         })?;
         let (outcome, time) = match below.answer {
             PastContact::Never => (MbPastOutcome::Never, f64::NAN),

@@ -436,13 +436,18 @@ fn build(world: World, seed: u64) -> Vec<Spec> {
             }
             specs
         }
-        World::WallCuboid | World::WallMesh => {
+        World::WallCuboid | World::WallMesh | World::SpinMesh => {
+            // Issue 55's wall worlds (200 m/s, up to 60 rad/s, from 3 to 5
+            // in front of the wall) and issue 64's fast spins (20 to 60
+            // m/s, 100 to 300 rad/s, from 0.5 to 1.5 in front of the mesh).
+            let spins = world == World::SpinMesh;
             let half = Vector::new(0.005, 4.0, 4.0);
             let mut specs = vec![if world == World::WallCuboid {
                 wall(half.x, half.y)
             } else {
                 mesh_wall(half)
             }];
+            let (x0, spread) = if spins { (-1.0, 0.5) } else { (-4.0, 1.0) };
             for k in 0..20 {
                 let shape = if k % 2 == 0 {
                     SharedShape::ball(0.05)
@@ -450,28 +455,21 @@ fn build(world: World, seed: u64) -> Vec<Spec> {
                     SharedShape::cuboid(0.05, 0.05, 0.05)
                 };
                 let cell = Vector::new(0.0, (k % 4) as f64 * 1.4 - 2.1, (k / 4) as f64 * 1.4 - 2.8);
-                let pos =
-                    Vector::new(-4.0 + r.range(-1.0, 1.0), 0.0, 0.0) + cell + jitter(&mut r, 0.3);
-                let lin = Vector::new(200.0, 0.0, 0.0) + jitter(&mut r, 4.0);
-                let ang = unit(&mut r) * r.range(0.0, 60.0);
-                specs.push(dynamic(shape, Pose::from_parts(pos, rot(&mut r)), lin, ang));
-            }
-            specs
-        }
-        World::SpinMesh => {
-            let mut specs = vec![mesh_wall(Vector::new(0.005, 4.0, 4.0))];
-            for k in 0..20 {
-                let shape = if k % 2 == 0 {
-                    SharedShape::ball(0.05)
+                let pos = Vector::new(x0 + r.range(-spread, spread), 0.0, 0.0)
+                    + cell
+                    + jitter(&mut r, 0.3);
+                let lin = if spins {
+                    let sp = r.range(20.0, 60.0);
+                    Vector::new(sp, 0.0, 0.0) + jitter(&mut r, 0.05 * sp)
                 } else {
-                    SharedShape::cuboid(0.05, 0.05, 0.05)
+                    Vector::new(200.0, 0.0, 0.0) + jitter(&mut r, 4.0)
                 };
-                let cell = Vector::new(0.0, (k % 4) as f64 * 1.4 - 2.1, (k / 4) as f64 * 1.4 - 2.8);
-                let pos =
-                    Vector::new(-1.0 + r.range(-0.5, 0.5), 0.0, 0.0) + cell + jitter(&mut r, 0.3);
-                let sp = r.range(20.0, 60.0);
-                let lin = Vector::new(sp, 0.0, 0.0) + jitter(&mut r, 0.05 * sp);
-                let ang = unit(&mut r) * r.range(100.0, 300.0);
+                let ang = unit(&mut r)
+                    * if spins {
+                        r.range(100.0, 300.0)
+                    } else {
+                        r.range(0.0, 60.0)
+                    };
                 specs.push(dynamic(shape, Pose::from_parts(pos, rot(&mut r)), lin, ang));
             }
             specs
