@@ -721,6 +721,52 @@ typedef struct mb_past_report {
 } mb_past_report;
 
 /**
+ * A pair's ceiling (`mb_past_contact_below`): the overlap along its normal
+ * it stays below, and whether it was held (the answer was
+ * `MB_PAST_OUTCOME_AT`). Carry it to the next step's call for the same pair.
+ */
+typedef struct mb_ceiling {
+  /**
+   * The overlap (A's greatest `normal . x` less B's least) the pair
+   * stays below.
+   */
+  double value;
+  /**
+   * Nonzero: the pair was held at the answer's time (then the next step
+   * keeps this ceiling).
+   */
+  uint32_t held;
+} mb_ceiling;
+
+/**
+ * `mb_past_contact_below`'s answer.
+ */
+typedef struct mb_below_report {
+  /**
+   * Never (the overlap stays below the ceiling over the interval), from
+   * `time` on, or undecided.
+   */
+  enum mb_past_outcome outcome;
+  /**
+   * For `MB_PAST_OUTCOME_AT`, the time; NaN otherwise.
+   */
+  double time;
+  /**
+   * An upper bound of the overlap along the normal at the start.
+   */
+  double overlap;
+  /**
+   * The ceiling used: carry it to the next step.
+   */
+  struct mb_ceiling ceiling;
+  /**
+   * Nonzero: a cast was made (`0`: decided by the closed form, a few
+   * support points).
+   */
+  uint32_t cast;
+} mb_below_report;
+
+/**
  * One pair of a scene query's answer.
  */
 typedef struct mb_scene_pair {
@@ -1353,6 +1399,47 @@ enum mb_status mb_past_contact(const struct mb_shape *shape_a,
                                struct mb_vec3 normal,
                                const struct mb_params *params,
                                struct mb_past_report *out);
+
+/**
+ * For bodies touching at the start of their motions' interval (resting,
+ * sliding, or overlapping by what a solver left): whether the overlap
+ * along `normal` (A's greatest `normal . x` less B's least, an upper bound
+ * of the penetration depth; any nonzero vector is sound, keep the same one
+ * while the ceiling is carried) stays below a ceiling over the interval,
+ * certified (Rust crate: `ca::past_contact_below`; `proofs/12-shapes.md`,
+ * Lemma 12.14). The ceiling is `last`'s when that pair was held
+ * (`last->held`): a pair stopped every step cannot creep in; otherwise
+ * the start's overlap plus the contact distance, or `floor` (an overlap
+ * always allowed, the solver's allowed penetration; `0` for none) when
+ * that is more. A closed form decides a resting or sliding pair without a
+ * cast (`out->cast` false); otherwise one cast against the half-space at
+ * the ceiling, carried by the body that turns less. `last` may be `NULL`
+ * (a pair not carried), `params` `NULL` for the defaults; a NaN or negative
+ * `floor` counts as zero. The answer is
+ * written to `*out`.
+ *
+ * `MB_STATUS_NULL_POINTER` / `MB_STATUS_INVALID_HANDLE` for a bad handle,
+ * `MB_STATUS_INVALID_INPUT` for a zero or non-finite `normal`,
+ * `MB_STATUS_INVALID_PARAMETER` for parameters out of range,
+ * `MB_STATUS_QUERY_ERROR` for motions over different intervals.
+ *
+ * **Thread safety**: any thread; the shapes, motions and params may be
+ * shared by concurrent calls.
+ *
+ * # Safety
+ * The handles are not freed during the call; `last` is `NULL` or valid for
+ * reading an `mb_ceiling`; `params` is `NULL` or valid for reading an
+ * `mb_params`; `out` is `NULL` or valid for writing an `mb_below_report`.
+ */
+enum mb_status mb_past_contact_below(const struct mb_shape *shape_a,
+                                     const struct mb_motion *motion_a,
+                                     const struct mb_shape *shape_b,
+                                     const struct mb_motion *motion_b,
+                                     struct mb_vec3 normal,
+                                     const struct mb_ceiling *last,
+                                     double floor,
+                                     const struct mb_params *params,
+                                     struct mb_below_report *out);
 
 /**
  * A new empty scene over `[0, duration]`, written to `*out`.

@@ -58,9 +58,9 @@ pub use motion::{
     mb_motion_from_velocities, mb_motion_point_at, MbMotion, MbPose, MbQuat, MbVec3,
 };
 pub use query::{
-    mb_params_default, mb_past_contact, mb_time_of_impact, mb_time_of_impact_batch, MbBound,
-    MbCriterion, MbOutcome, MbPairQuery, MbParams, MbPastOutcome, MbPastReport, MbReport,
-    MbWitnessSearch,
+    mb_params_default, mb_past_contact, mb_past_contact_below, mb_time_of_impact,
+    mb_time_of_impact_batch, MbBelowReport, MbBound, MbCeiling, MbCriterion, MbOutcome,
+    MbPairQuery, MbParams, MbPastOutcome, MbPastReport, MbReport, MbWitnessSearch,
 };
 pub use scene::{
     mb_scene_add, mb_scene_free, mb_scene_len, mb_scene_new, mb_scene_query, mb_scene_result_free,

@@ -1,8 +1,9 @@
 //! The pair query: parameters, report, `mb_time_of_impact`.
 
 use motion_bound::ca::{
-    past_contact, time_of_impact, AnyPair, BoundChoice, CaError, CaOutcome, CaParams, CaReport,
-    ContactCriterion, MeshWorkspace, OwnedShape, PastContact, WitnessSearch, Work,
+    past_contact, past_contact_below, time_of_impact, AnyPair, BoundChoice, CaError, CaOutcome,
+    CaParams, CaReport, Ceiling, ContactCriterion, MeshWorkspace, OwnedShape, PastContact,
+    WitnessSearch, Work,
 };
 use motion_bound::{RigidMotion, Vec3};
 use rayon::prelude::*;
@@ -517,25 +518,7 @@ pub unsafe extern "C" fn mb_past_contact(
                 read_in(params, "params")?,
             )
         };
-        let n = normal.checked("normal")?;
-        if n == Vec3::ZERO {
-            return Err(Failure::new(
-                MbStatus::InvalidInput,
-                "normal: the zero vector (give the contact normal from A to B)",
-            ));
-        }
-        let p = self::params(p)?;
-        let (pa, pb) = (sa.data.prepare(), sb.data.prepare());
-        let (pa, pb) = (
-            pa.map_err(|e| pair_failure(e.into(), ""))?,
-            pb.map_err(|e| pair_failure(e.into(), ""))?,
-        );
-        let answer = past_contact(pa.shape(), &ma.motion, pb.shape(), &mb.motion, n, &p).map_err(
-            |e| match e {
-                CaError::Input(e) => Failure::new(MbStatus::InvalidInput, format!("normal: {e}")),
-                e => pair_failure(e, ""),
-            },
-        )?;
+        let answer = touching_rule((sa, ma, sb, mb), normal, p, past_contact)?;
         let report = match answer {
             PastContact::Never => MbPastReport {
                 outcome: MbPastOutcome::Never,
@@ -549,6 +532,159 @@ pub unsafe extern "C" fn mb_past_contact(
                 outcome: MbPastOutcome::Undecided,
                 time: f64::NAN,
             },
+        };
+        // SAFETY: `out` is NULL or writable (this function's contract).
+        unsafe { write_out(out, report, "out") }
+    })
+}
+
+/// What `mb_past_contact` and `mb_past_contact_below` share once their
+/// handles are read: the normal checked (zero or non-finite: named), the
+/// parameters, both shapes prepared, and `rule` run with its error named.
+fn touching_rule<R>(
+    (sa, ma, sb, mb): (&MbShape, &MbMotion, &MbShape, &MbMotion),
+    normal: MbVec3,
+    p: Option<MbParams>,
+    rule: impl FnOnce(
+        motion_bound::ca::Shape<'_, f64>,
+        &RigidMotion<f64>,
+        motion_bound::ca::Shape<'_, f64>,
+        &RigidMotion<f64>,
+        Vec3<f64>,
+        &CaParams<f64>,
+    ) -> Result<R, CaError>,
+) -> Res<R> {
+    let n = normal.checked("normal")?;
+    if n == Vec3::ZERO {
+        return Err(Failure::new(
+            MbStatus::InvalidInput,
+            "normal: the zero vector (give the contact normal from A to B)",
+        ));
+    }
+    let p = self::params(p)?;
+    let (pa, pb) = (sa.data.prepare(), sb.data.prepare());
+    let (pa, pb) = (
+        pa.map_err(|e| pair_failure(e.into(), ""))?,
+        pb.map_err(|e| pair_failure(e.into(), ""))?,
+    );
+    rule(pa.shape(), &ma.motion, pb.shape(), &mb.motion, n, &p).map_err(|e| match e {
+        CaError::Input(e) => Failure::new(MbStatus::InvalidInput, format!("normal: {e}")),
+        e => pair_failure(e, ""),
+    })
+}
+
+/// A pair's ceiling (`mb_past_contact_below`): the overlap along its normal
+/// it stays below, and whether it was held (the answer was
+/// `MB_PAST_OUTCOME_AT`). Carry it to the next step's call for the same pair.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MbCeiling {
+    /// The overlap (A's greatest `normal . x` less B's least) the pair
+    /// stays below.
+    pub value: f64,
+    /// Nonzero: the pair was held at the answer's time (then the next step
+    /// keeps this ceiling).
+    pub held: u32,
+}
+
+// SAFETY: a `repr(C)` struct of an `f64` and a `u32` (and padding): every
+// bit pattern of the fields is a value.
+unsafe impl Plain for MbCeiling {}
+
+/// `mb_past_contact_below`'s answer.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MbBelowReport {
+    /// Never (the overlap stays below the ceiling over the interval), from
+    /// `time` on, or undecided.
+    pub outcome: MbPastOutcome,
+    /// For `MB_PAST_OUTCOME_AT`, the time; NaN otherwise.
+    pub time: f64,
+    /// An upper bound of the overlap along the normal at the start.
+    pub overlap: f64,
+    /// The ceiling used: carry it to the next step.
+    pub ceiling: MbCeiling,
+    /// Nonzero: a cast was made (`0`: decided by the closed form, a few
+    /// support points).
+    pub cast: u32,
+}
+
+/// For bodies touching at the start of their motions' interval (resting,
+/// sliding, or overlapping by what a solver left): whether the overlap
+/// along `normal` (A's greatest `normal . x` less B's least, an upper bound
+/// of the penetration depth; any nonzero vector is sound, keep the same one
+/// while the ceiling is carried) stays below a ceiling over the interval,
+/// certified (Rust crate: `ca::past_contact_below`; `proofs/12-shapes.md`,
+/// Lemma 12.14). The ceiling is `last`'s when that pair was held
+/// (`last->held`): a pair stopped every step cannot creep in; otherwise
+/// the start's overlap plus the contact distance, or `floor` (an overlap
+/// always allowed, the solver's allowed penetration; `0` for none) when
+/// that is more. A closed form decides a resting or sliding pair without a
+/// cast (`out->cast` false); otherwise one cast against the half-space at
+/// the ceiling, carried by the body that turns less. `last` may be `NULL`
+/// (a pair not carried), `params` `NULL` for the defaults; a NaN or negative
+/// `floor` counts as zero. The answer is
+/// written to `*out`.
+///
+/// `MB_STATUS_NULL_POINTER` / `MB_STATUS_INVALID_HANDLE` for a bad handle,
+/// `MB_STATUS_INVALID_INPUT` for a zero or non-finite `normal`,
+/// `MB_STATUS_INVALID_PARAMETER` for parameters out of range,
+/// `MB_STATUS_QUERY_ERROR` for motions over different intervals.
+///
+/// **Thread safety**: any thread; the shapes, motions and params may be
+/// shared by concurrent calls.
+///
+/// # Safety
+/// The handles are not freed during the call; `last` is `NULL` or valid for
+/// reading an `mb_ceiling`; `params` is `NULL` or valid for reading an
+/// `mb_params`; `out` is `NULL` or valid for writing an `mb_below_report`.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn mb_past_contact_below(
+    shape_a: *const MbShape,
+    motion_a: *const MbMotion,
+    shape_b: *const MbShape,
+    motion_b: *const MbMotion,
+    normal: MbVec3,
+    last: *const MbCeiling,
+    floor: f64,
+    params: *const MbParams,
+    out: *mut MbBelowReport,
+) -> MbStatus {
+    guard(|| {
+        // SAFETY: the handles are not freed during the call, and `last` and
+        // `params` are NULL or readable (this function's contract).
+        let (sa, ma, sb, mb, last, p) = unsafe {
+            (
+                handle_ref(shape_a, "shape_a")?,
+                handle_ref(motion_a, "motion_a")?,
+                handle_ref(shape_b, "shape_b")?,
+                handle_ref(motion_b, "motion_b")?,
+                read_in(last, "last")?,
+                read_in(params, "params")?,
+            )
+        };
+        let last = last.map(|c| Ceiling {
+            value: c.value,
+            held: c.held != 0,
+        });
+        let below = touching_rule((sa, ma, sb, mb), normal, p, |a, ma, b, mb, n, p| {
+            past_contact_below(a, ma, b, mb, n, last, floor, p)
+        })?;
+        let (outcome, time) = match below.answer {
+            PastContact::Never => (MbPastOutcome::Never, f64::NAN),
+            PastContact::At(t) => (MbPastOutcome::At, t),
+            _ => (MbPastOutcome::Undecided, f64::NAN),
+        };
+        let report = MbBelowReport {
+            outcome,
+            time,
+            overlap: below.overlap,
+            ceiling: MbCeiling {
+                value: below.ceiling.value,
+                held: u32::from(below.ceiling.held),
+            },
+            cast: u32::from(below.cast),
         };
         // SAFETY: `out` is NULL or writable (this function's contract).
         unsafe { write_out(out, report, "out") }

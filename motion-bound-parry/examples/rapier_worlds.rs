@@ -1,5 +1,5 @@
 //! Rapier's continuous collision detection, with and without the certified
-//! cast, in eight stress worlds, judged by an independent checker.
+//! cast, in ten worlds, judged by an independent checker.
 //!
 //! ```text
 //! cargo run --release -p motion-bound-parry --features rapier --example rapier_worlds -- --launches 20 [--rounds 5]
@@ -7,7 +7,7 @@
 //!
 //! Each world is launched `--launches` times (default 20; each launch a
 //! seed: random start poses, velocities and spins), each launch stepped 150
-//! times at `dt = 1/60` with gravity off and CCD enabled on every dynamic
+//! times at `dt = 1/60` with gravity off (but in `stack`) and CCD enabled on every dynamic
 //! body, twice with the same launches:
 //!
 //! - **default**: rapier's narrow phase with parry's dispatcher, plain
@@ -39,7 +39,14 @@
 //!   at 20 to 80 rad/s, at a wall 0.04 thick;
 //! - `wall-cuboid`, `wall-mesh`: twenty balls (radius 0.05) and cubes
 //!   (half side 0.05) at 200 m/s, spinning up to 60 rad/s, at a wall 0.01
-//!   thick: a cuboid, or its 12 triangles as a mesh (issue 55's wall).
+//!   thick: a cuboid, or its 12 triangles as a mesh (issue 55's wall);
+//! - `spin-mesh`: twenty balls and cubes of 0.05 at 20 to 60 m/s, spinning
+//!   at 100 to 300 rad/s, at that 12-triangle mesh wall (issue 64);
+//! - `stack`: four columns of five boxes (half side 0.1) resting on a fixed
+//!   floor under gravity (9.81 down `y`), placed 1e-3 apart and jittered
+//!   (issue 64: resting contact handed to the solver). Its line also gives
+//!   rapier with CCD off (`no-ccd`), the price a resting world should
+//!   keep.
 //!
 //! After the worlds, the `slide` lines: a ball stopped at the cuboid wall
 //! of `wall-cuboid` at 200 m/s, under gravity, then sliding down the wall;
@@ -166,11 +173,17 @@ pub(crate) enum World {
     WallCuboid,
     /// The same at a 12-triangle mesh of that wall.
     WallMesh,
+    /// Twenty small balls and cubes spinning at 100 to 300 rad/s at that
+    /// mesh wall (issue 64).
+    SpinMesh,
+    /// Twenty boxes resting in four columns on a floor, under gravity
+    /// (issue 64).
+    Stack,
 }
 
 impl World {
     /// Every world, in the order printed.
-    pub(crate) const ALL: [Self; 8] = [
+    pub(crate) const ALL: [Self; 10] = [
         Self::Board,
         Self::Bullets,
         Self::Plate,
@@ -179,6 +192,8 @@ impl World {
         Self::Swarm,
         Self::WallCuboid,
         Self::WallMesh,
+        Self::SpinMesh,
+        Self::Stack,
     ];
 
     /// The world's short name.
@@ -192,6 +207,17 @@ impl World {
             Self::Swarm => "swarm",
             Self::WallCuboid => "wall-cuboid",
             Self::WallMesh => "wall-mesh",
+            Self::SpinMesh => "spin-mesh",
+            Self::Stack => "stack",
+        }
+    }
+
+    /// The world's gravity (only the stack has one).
+    pub(crate) fn gravity(self) -> Vector {
+        if self == Self::Stack {
+            Vector::new(0.0, -9.81, 0.0)
+        } else {
+            Vector::ZERO
         }
     }
 }
@@ -212,6 +238,8 @@ pub(crate) enum Mode {
     /// [`CertifiedDispatcher`], dynamic colliders wrapped in [`Swept`], no
     /// pass (the README's "many fast bodies, no pass").
     SweptOnly,
+    /// Parry's dispatcher, plain shapes, CCD off (the stack's reference).
+    NoCcd,
 }
 
 /// A thin fixed obstacle: its local normal axis and half extents, for the
@@ -408,23 +436,18 @@ fn build(world: World, seed: u64) -> Vec<Spec> {
             }
             specs
         }
-        World::WallCuboid | World::WallMesh => {
+        World::WallCuboid | World::WallMesh | World::SpinMesh => {
+            // Issue 55's wall worlds (200 m/s, up to 60 rad/s, from 3 to 5
+            // in front of the wall) and issue 64's fast spins (20 to 60
+            // m/s, 100 to 300 rad/s, from 0.5 to 1.5 in front of the mesh).
+            let spins = world == World::SpinMesh;
             let half = Vector::new(0.005, 4.0, 4.0);
             let mut specs = vec![if world == World::WallCuboid {
                 wall(half.x, half.y)
             } else {
-                // A user's mesh of the wall: the box's 12 triangles, a
-                // surface (not flagged as a solid).
-                let (v, t) = parry3d_f64::shape::Cuboid::new(half).to_trimesh();
-                Spec {
-                    shape: SharedShape::trimesh(v, t).expect("a valid box mesh"),
-                    pose: Pose::IDENTITY,
-                    linvel: Vector::ZERO,
-                    angvel: Vector::ZERO,
-                    dynamic: false,
-                    thin: Some(Thin { axis: 0, half }),
-                }
+                mesh_wall(half)
             }];
+            let (x0, spread) = if spins { (-1.0, 0.5) } else { (-4.0, 1.0) };
             for k in 0..20 {
                 let shape = if k % 2 == 0 {
                     SharedShape::ball(0.05)
@@ -432,14 +455,66 @@ fn build(world: World, seed: u64) -> Vec<Spec> {
                     SharedShape::cuboid(0.05, 0.05, 0.05)
                 };
                 let cell = Vector::new(0.0, (k % 4) as f64 * 1.4 - 2.1, (k / 4) as f64 * 1.4 - 2.8);
-                let pos =
-                    Vector::new(-4.0 + r.range(-1.0, 1.0), 0.0, 0.0) + cell + jitter(&mut r, 0.3);
-                let lin = Vector::new(200.0, 0.0, 0.0) + jitter(&mut r, 4.0);
-                let ang = unit(&mut r) * r.range(0.0, 60.0);
+                let pos = Vector::new(x0 + r.range(-spread, spread), 0.0, 0.0)
+                    + cell
+                    + jitter(&mut r, 0.3);
+                let lin = if spins {
+                    let sp = r.range(20.0, 60.0);
+                    Vector::new(sp, 0.0, 0.0) + jitter(&mut r, 0.05 * sp)
+                } else {
+                    Vector::new(200.0, 0.0, 0.0) + jitter(&mut r, 4.0)
+                };
+                let ang = unit(&mut r)
+                    * if spins {
+                        r.range(100.0, 300.0)
+                    } else {
+                        r.range(0.0, 60.0)
+                    };
                 specs.push(dynamic(shape, Pose::from_parts(pos, rot(&mut r)), lin, ang));
             }
             specs
         }
+        World::Stack => {
+            let h = 0.1;
+            let mut specs = vec![Spec {
+                shape: SharedShape::cuboid(4.0, 0.1, 4.0),
+                pose: Pose::from_translation(Vector::new(0.0, -0.1, 0.0)),
+                linvel: Vector::ZERO,
+                angvel: Vector::ZERO,
+                dynamic: false,
+                thin: None,
+            }];
+            for col in 0..4 {
+                let x = (col % 2) as f64 * 0.6 - 0.3;
+                let z = (col / 2) as f64 * 0.6 - 0.3;
+                for level in 0..5 {
+                    let y = h + 1e-3 + level as f64 * (2.0 * h + 1e-3);
+                    let pos = Vector::new(x + r.range(-0.01, 0.01), y, z + r.range(-0.01, 0.01));
+                    let turn = Rotation::from_axis_angle(Vector::Y, r.range(-0.1, 0.1));
+                    specs.push(dynamic(
+                        SharedShape::cuboid(h, h, h),
+                        Pose::from_parts(pos, turn),
+                        Vector::ZERO,
+                        Vector::ZERO,
+                    ));
+                }
+            }
+            specs
+        }
+    }
+}
+
+/// A user's mesh of a thin wall: the box's 12 triangles, a surface (not
+/// flagged as a solid).
+fn mesh_wall(half: Vector) -> Spec {
+    let (v, t) = parry3d_f64::shape::Cuboid::new(half).to_trimesh();
+    Spec {
+        shape: SharedShape::trimesh(v, t).expect("a valid box mesh"),
+        pose: Pose::IDENTITY,
+        linvel: Vector::ZERO,
+        angvel: Vector::ZERO,
+        dynamic: false,
+        thin: Some(Thin { axis: 0, half }),
     }
 }
 
@@ -586,6 +661,8 @@ pub(crate) struct Tally {
     pub(crate) pass_casts: usize,
     /// Bodies the certified pass moved back to a time of impact.
     pub(crate) pass_clamped: usize,
+    /// Touching pairs the pass decided by the closed form, no cast.
+    pub(crate) pass_checked: usize,
     /// The dispatcher's counts (`Installed` and `Ours`).
     pub(crate) stats: DispatchStats,
 }
@@ -601,13 +678,14 @@ fn make_world(
     specs: &[Spec],
     mode: Mode,
     dispatcher: &CertifiedDispatcher,
+    gravity: Vector,
 ) -> (PhysicsWorld, Vec<RigidBodyHandle>) {
     let mut w = PhysicsWorld {
-        gravity: Vector::ZERO,
+        gravity,
         ..PhysicsWorld::default()
     };
     w.integration_parameters.dt = DT;
-    if mode != Mode::Default {
+    if !matches!(mode, Mode::Default | Mode::NoCcd) {
         w.narrow_phase = NarrowPhase::with_query_dispatcher(dispatcher.clone());
     }
     let mut handles = Vec::new();
@@ -617,7 +695,7 @@ fn make_world(
                 .pose(s.pose)
                 .linvel(s.linvel)
                 .angvel(s.angvel)
-                .ccd_enabled(true)
+                .ccd_enabled(mode != Mode::NoCcd)
                 .can_sleep(false);
             let shape = if matches!(mode, Mode::Swept | Mode::SweptOnly) {
                 Swept::shared(s.shape.clone())
@@ -650,7 +728,7 @@ pub(crate) fn run_world(
     for seed in 0..launches {
         let specs = build(world, seed);
         let geos: Vec<Geo> = specs.iter().map(Geo::new).collect();
-        let (mut w, hs) = make_world(&specs, mode, &dispatcher);
+        let (mut w, hs) = make_world(&specs, mode, &dispatcher, world.gravity());
         let (mut tunnelled, mut late) = (false, false);
         for step in 0..steps {
             let before: Vec<Pose> = hs.iter().map(|h| *w.bodies[*h].position()).collect();
@@ -666,6 +744,7 @@ pub(crate) fn run_world(
                 t.pass_secs += (t1 - t0).as_secs_f64() + t2.elapsed().as_secs_f64();
                 t.pass_casts += c.casts;
                 t.pass_clamped += c.bodies;
+                t.pass_checked += c.checked;
             } else {
                 w.step();
             }
@@ -749,7 +828,7 @@ pub(crate) fn slide(mode: Mode, spin: f64) -> f64 {
 
 fn main() {
     let mut args = Args::from_env(
-        "rapier_worlds [--launches 20] [--steps 150] [--world NAME] [--rounds 1] [--verbose] [--swept] [--only default|ours]",
+        "rapier_worlds [--launches 20] [--steps 150] [--world NAME] [--rounds 1] [--verbose] [--swept] [--only default|ours|no-ccd]",
     );
     let launches: u64 = args.value_or("--launches", 20);
     let steps: usize = args.value_or("--steps", STEPS);
@@ -760,7 +839,7 @@ fn main() {
     let only_mode: Option<String> = args.value("--only");
     args.finish();
     println!(
-        "{launches} launches x {steps} steps per world, dt 1/60, gravity off, CCD on, TOL {TOL}"
+        "{launches} launches x {steps} steps per world, dt 1/60, gravity off (stack: on), CCD on, TOL {TOL}"
     );
     let worlds: Vec<World> = World::ALL
         .into_iter()
@@ -771,18 +850,20 @@ fn main() {
         let mode = match m.as_str() {
             "default" => Mode::Default,
             "ours" => Mode::Ours,
+            "no-ccd" => Mode::NoCcd,
             _ => {
-                eprintln!("--only takes default or ours");
+                eprintln!("--only takes default, ours or no-ccd");
                 std::process::exit(2);
             }
         };
         for &world in &worlds {
             let t = run_world(world, mode, launches, steps, false, false);
             println!(
-                "{} {m}: ms per step {:.4}, pass casts {}, dispatcher certified casts {}",
+                "{} {m}: ms per step {:.4}, pass casts {}, checked {}, dispatcher certified casts {}",
                 world.name(),
                 t.ms_per_step(),
                 t.pass_casts,
+                t.pass_checked,
                 t.stats.certified
             );
         }
@@ -795,11 +876,36 @@ fn main() {
         // With `--rounds R`, R - 1 more unchecked rounds, alternated: the
         // fastest of each (the least disturbed by the machine).
         let (mut d_secs, mut o_secs) = (d.step_secs, o.step_secs);
+        // The stack's reference: rapier with CCD off (checked too).
+        let resting = world == World::Stack;
+        let mut n_secs = f64::INFINITY;
+        if resting {
+            let n = run_world(world, Mode::NoCcd, launches, steps, true, verbose);
+            n_secs = n.step_secs;
+            println!(
+                "no-ccd {}: tunnelled {}, late {}",
+                world.name(),
+                n.tunnelled,
+                n.late
+            );
+        }
         for _ in 1..rounds {
             let d = run_world(world, Mode::Default, launches, steps, false, false);
             let o = run_world(world, Mode::Ours, launches, steps, false, false);
             d_secs = d_secs.min(d.step_secs);
             o_secs = o_secs.min(o.step_secs);
+            if resting {
+                let n = run_world(world, Mode::NoCcd, launches, steps, false, false);
+                n_secs = n_secs.min(n.step_secs);
+            }
+        }
+        if resting {
+            println!(
+                "world {}: ms per step no-ccd {:.4} (ours / no-ccd {:.3})",
+                world.name(),
+                1e3 * n_secs / d.steps.max(1) as f64,
+                o_secs / n_secs
+            );
         }
         println!(
             "world {}: tunnelled default {} ours {}, late default {} ours {}, \
@@ -830,14 +936,16 @@ fn main() {
             o.stats,
             o.pass_casts,
             o.pass_clamped,
+            o.pass_checked,
             o.pass_secs,
             o.steps,
         ));
     }
-    for (world, s, casts, clamped, pass_secs, steps) in stats {
+    for (world, s, casts, clamped, checked, pass_secs, steps) in stats {
         println!(
             "stats {}: dispatcher certified casts {}, handed to parry {}; \
-             pass casts {casts}, bodies moved back {clamped}, pass ms per step {:.4}",
+             pass casts {casts}, touching pairs checked without a cast {checked}, \
+             bodies moved back {clamped}, pass ms per step {:.4}",
             world.name(),
             s.certified,
             s.handed_to_parry,

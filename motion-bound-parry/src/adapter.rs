@@ -11,10 +11,10 @@
 //! - `cast.rs`: the certified cast, `cast_shapes_nonlinear` (error, convert).
 //! - `cache.rs`: `ShapeCache`, converted bodies kept across queries (error,
 //!   swept, convert, cast).
+//! - `past_contact.rs`: whether a pair touching at the start goes deeper,
+//!   the core's rule on parry's shapes (swept, convert, cache).
 //! - `dispatcher.rs`: `CertifiedDispatcher`, rapier's query dispatcher
-//!   (error, swept, cache).
-//! - `past_contact.rs`: whether a pair touching at the start goes deeper
-//!   (swept, dispatcher).
+//!   (error, swept, cache, past_contact).
 
 use super::parry;
 
@@ -39,5 +39,5 @@ pub use convert::{isometry, rigid_motion, Body};
 pub use dispatcher::{CertifiedDispatcher, DispatchStats};
 pub use error::CastError;
 #[allow(unused_imports)] // the f32 adapter has no rapier pass
-pub(crate) use past_contact::PastContact;
+pub(crate) use past_contact::{PastContact, Touching};
 pub use swept::Swept;

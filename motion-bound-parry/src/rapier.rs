@@ -20,18 +20,28 @@
 //! on that very motion, at the group's earliest certified time of impact.
 //! Velocities are kept: the next step's contact solver resolves the
 //! contact. A pair within the contact distance at the start (its first
-//! cast is not asked again with a smaller one) is a resting contact, left
-//! to the solver, unless the body goes deeper: the first time it may reach more
-//! than the contact distance past the plane that separated the pair at the
-//! start (certified, a cast against that half-space: a body the solver
-//! pushes on into a thin wall is stopped there, one sliding along the wall
-//! or leaving it is not), and its group is stopped then. When the other
-//! body rotates too, or a shape's extent is not computed (heightfields,
-//! polylines, voxels), the pair is asked again with a smaller contact
-//! distance, and still touching, the rule is parry's static penetration
-//! depth at both ends (deeper at the end by more than the contact
-//! distance: the bodies are held at their start poses); that does not see
-//! a body pass right through a thin rotating body within one step.
+//! cast is not asked again with a smaller one) is a resting or sliding
+//! contact, left to the solver (`proofs/12-shapes.md`, Lemma 12.14): its
+//! overlap along the start's contact normal may reach a ceiling, the
+//! start's overlap plus the contact distance or the solver's allowed
+//! penetration ([`with_allowed_overlap`](CertifiedPass::with_allowed_overlap))
+//! when that is more, and its group is stopped at the first time it may
+//! pass it (certified, a cast against the half-space at the ceiling: a
+//! body the solver pushes on into a thin wall is stopped there, one
+//! sliding along the wall or leaving it is not). The pass carries each
+//! touching pair's normal and ceiling to the next step: a pair it held
+//! keeps its ceiling, and no pair's ceiling rises above the one carried
+//! (beyond the allowed penetration), so nothing creeps in a step at a time;
+//! and a pair whose overlap, grown by a bound of its approach over the step
+//! (its relative speed along the normal and both turns), stays below the
+//! ceiling is decided with two support points, no cast. When both bodies
+//! turn too fast for the rule, or a shape's extent is not computed
+//! (heightfields, polylines, voxels), the pair is asked again with a
+//! smaller contact distance, and still touching, the rule is parry's
+//! static penetration depth at both ends (deeper at the end by more than
+//! the contact distance: the bodies are held at their start poses); that
+//! does not see a body pass right through a thin rotating body within one
+//! step.
 //! A swept body stopped early stands at its stop pose for the rest of the
 //! step: every swept body still moving then is cast against it there, and
 //! stopped at the hit, in rounds (`proofs/12-shapes.md`, Lemma 12.8).
@@ -41,7 +51,9 @@
 //! cost: each collider's motion and swept box once per step, then one cast
 //! per pair of colliders whose swept boxes meet, unless the balls bounding
 //! them about their motions' centres (which move on straight lines) never
-//! come within the contact distance ([`ClampStats::apart`], a closed form).
+//! come within the contact distance ([`ClampStats::apart`], a closed form),
+//! or the pair touched at the last step's start and its certificate still
+//! covers this step ([`ClampStats::checked`]).
 //! The pairs are found by a scan of every collider per CCD collider: for
 //! tens of fast bodies, not for thousands.
 //!
@@ -75,13 +87,13 @@ use std::sync::Arc;
 
 use motion_bound::ca::CaParams;
 use parry3d_f64::bounding_volume::BoundingVolume;
-use rapier3d_f64::dynamics::{RigidBodyHandle, RigidBodySet};
+use rapier3d_f64::dynamics::{IntegrationParameters, RigidBodyHandle, RigidBodySet};
 use rapier3d_f64::geometry::{ColliderHandle, ColliderSet};
 use rapier3d_f64::math::{Pose, Vector};
 use rapier3d_f64::parry::query::NonlinearRigidMotion;
 use rapier3d_f64::pipeline::PhysicsWorld;
 
-use crate::f64::{CastError, CertifiedDispatcher, PastContact, ShapeCache, Swept};
+use crate::f64::{CastError, CertifiedDispatcher, PastContact, ShapeCache, Swept, Touching};
 
 /// What one [`CertifiedPass::clamp`] did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -102,6 +114,10 @@ pub struct ClampStats {
     /// motion's centre, which moves on a line) never came within the
     /// contact distance: decided apart without a cast.
     pub apart: usize,
+    /// Pairs touching at an earlier step whose overlap along that step's
+    /// normal is certified to stay below its ceiling by the closed form
+    /// (Lemma 12.14): decided with a few support points, no cast.
+    pub checked: usize,
 }
 
 /// The certified pass (see the module docs).
@@ -127,7 +143,20 @@ pub struct CertifiedPass {
     hits: Vec<(usize, Option<usize>, f64)>,
     /// Scratch kept between steps: the pair scan's view of `placed`.
     scan: Vec<Scan>,
+    /// Pairs touching at the start of the last step, by their colliders:
+    /// the normal their overlap was taken along and its ceiling (Lemma
+    /// 12.14), carried to this step.
+    touching: Touchings,
+    /// Scratch kept between steps: this step's `touching`.
+    touching_next: Touchings,
+    /// The overlap a touching pair may always reach (the solver's allowed
+    /// penetration; Lemma 12.14's floor).
+    allowed_overlap: f64,
 }
+
+#[path = "rapier/touching.rs"]
+mod touching;
+use touching::Touchings;
 
 /// A collider as the pair scan reads it (compact: the scan reads every
 /// pair's).
@@ -151,6 +180,10 @@ struct Placed {
     velocity: parry3d_f64::math::Vector,
     /// The largest distance of the collider's points from the centre.
     radius: f64,
+    /// The largest distance from the centre of the points whose turn moves
+    /// the collider's extent along a direction: `radius`, or for a ball the
+    /// distance of its centre (a ball's extent does not turn about it).
+    turning: f64,
     motion: NonlinearRigidMotion,
     swept: parry3d_f64::bounding_volume::Aabb,
     handle: ColliderHandle,
@@ -270,7 +303,25 @@ impl CertifiedPass {
             motions: Vec::new(),
             hits: Vec::new(),
             scan: Vec::new(),
+            touching: Touchings::default(),
+            touching_next: Touchings::default(),
+            allowed_overlap: IntegrationParameters::default().allowed_linear_error(),
         }
+    }
+
+    /// The overlap (along the contact normal) a pair touching at the start
+    /// of a step may always reach without being stopped: rapier's allowed
+    /// penetration, which its solver leaves resting bodies within
+    /// (`IntegrationParameters::allowed_linear_error`, `0.005` for a length
+    /// unit of one, the default here; [`step`](Self::step) takes the
+    /// world's). Beyond it a touching pair's overlap grows by at most the
+    /// contact distance a step, and not at all while the pass holds it
+    /// (`proofs/12-shapes.md`, Lemma 12.14). A negative or NaN value counts
+    /// as zero.
+    #[must_use]
+    pub fn with_allowed_overlap(mut self, overlap: f64) -> Self {
+        self.allowed_overlap = overlap;
+        self
     }
 
     /// Casting through `dispatcher` (a clone of the one given to the narrow
@@ -309,6 +360,7 @@ impl CertifiedPass {
     /// `world.step()`, [`clamp`](Self::clamp) over
     /// `world.integration_parameters.dt`. Call it instead of `world.step()`.
     pub fn step(&mut self, world: &mut PhysicsWorld) -> ClampStats {
+        self.allowed_overlap = world.integration_parameters.allowed_linear_error();
         self.record(&world.bodies);
         world.step();
         let dt = world.integration_parameters.dt;
@@ -392,6 +444,11 @@ impl CertifiedPass {
             // Every point of the collider stays within `radius` of its
             // motion's centre, which moves on a straight line.
             let radius = (ball.center - m.local_center).length() + ball.radius;
+            let turning = if Swept::see_through(c.shape()).as_ball().is_some() {
+                (ball.center - m.local_center).length()
+            } else {
+                radius
+            };
             let centre = m.start * m.local_center;
             let b = swept_box(&m, c.shape(), centre, radius, dt, contact_distance);
             self.placed.push(Placed {
@@ -399,6 +456,7 @@ impl CertifiedPass {
                 centre,
                 velocity: m.linvel,
                 radius,
+                turning,
                 motion: m,
                 swept: b,
                 handle,
@@ -442,27 +500,85 @@ impl CertifiedPass {
                 };
                 let j = pb.body;
                 let (m1, m2) = (&pa.motion, &pb.motion);
+                let key = (pa.handle, pb.handle);
+                // Touching at the last step's start: first the closed form
+                // along that step's normal, under the carried ceiling (Lemma
+                // 12.14): a resting or sliding pair is decided with no cast.
+                let carried = self.touching.get(&key).copied();
+                if let Some((n, c)) = carried {
+                    if let Some(ceiling) = pa.still_below(
+                        ci.shape(),
+                        pb,
+                        cj.shape(),
+                        n,
+                        c,
+                        self.allowed_overlap,
+                        contact_distance,
+                        dt,
+                    ) {
+                        stats.checked += 1;
+                        self.touching_next.insert(key, (n, ceiling));
+                        continue;
+                    }
+                    if let Some(Touching {
+                        answer: PastContact::Never,
+                        normal,
+                        ceiling,
+                        cast,
+                        ..
+                    }) = self.dispatcher.touching(
+                        m1,
+                        ci.shape(),
+                        m2,
+                        cj.shape(),
+                        0.0,
+                        dt,
+                        Some(n),
+                        Some(c),
+                        self.allowed_overlap,
+                    ) {
+                        stats.checked += usize::from(!cast);
+                        stats.casts += usize::from(cast);
+                        self.touching_next.insert(key, (normal, ceiling));
+                        continue;
+                    }
+                }
                 stats.casts += 1;
                 // First without re-asking: a pair within the contact
-                // distance at the start is `past_contact`'s, and only when
-                // that cannot decide is it asked again (as rapier's casts
-                // are) and, still touching, left to parry's depths.
+                // distance at the start is the touching rule's (along the
+                // start's contact normal, the ceiling carried when the pair
+                // was held), and only when that cannot decide is it asked
+                // again (as rapier's casts are) and, still touching, left
+                // to parry's depths.
                 let first = self
                     .dispatcher
                     .cast_first(m1, ci.shape(), m2, cj.shape(), 0.0, dt);
                 let first = match first {
                     Ok(Some(hit)) if hit.time_of_impact <= 0.0 => {
-                        match self
-                            .dispatcher
-                            .past_contact(m1, ci.shape(), m2, cj.shape(), 0.0, dt)
-                        {
-                            PastContact::Never => continue,
-                            PastContact::At(t) => {
+                        let rule = self.dispatcher.touching(
+                            m1,
+                            ci.shape(),
+                            m2,
+                            cj.shape(),
+                            0.0,
+                            dt,
+                            None,
+                            carried.map(|(_, c)| c),
+                            self.allowed_overlap,
+                        );
+                        if let Some(t) = rule {
+                            if t.answer != PastContact::Unknown {
+                                self.touching_next.insert(key, (t.normal, t.ceiling));
+                            }
+                        }
+                        match rule.map(|t| t.answer) {
+                            Some(PastContact::Never) => continue,
+                            Some(PastContact::At(t)) => {
                                 stats.held += 1;
                                 hits.push((i, j, t));
                                 continue;
                             }
-                            PastContact::Unknown => self.dispatcher.cast_certified(
+                            _ => self.dispatcher.cast_certified(
                                 m1,
                                 ci.shape(),
                                 m2,
@@ -508,6 +624,9 @@ impl CertifiedPass {
             }
         }
         self.scan = scan;
+        // Pairs not met this step are forgotten.
+        core::mem::swap(&mut self.touching, &mut self.touching_next);
+        self.touching_next.clear();
         if !hits.is_empty() {
             self.stop_groups(bodies, colliders, &motions, &hits, &mut stats, dt);
         }
@@ -661,125 +780,5 @@ impl CertifiedPass {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::{swept_box, Placed};
-    use motion_bound_devkit::Rng;
-    use parry3d_f64::bounding_volume::{Aabb, BoundingVolume};
-    use parry3d_f64::math::{Pose, Rotation, Vector};
-    use parry3d_f64::query::NonlinearRigidMotion;
-    use parry3d_f64::shape::SharedShape;
-    use rapier3d_f64::geometry::ColliderHandle;
-
-    /// Against dense sampling of the motion (parry's own
-    /// `position_at_time`, the shape's box at 4,097 times): every sampled
-    /// box lies in the swept box, and the swept box is no larger than the
-    /// sampled ones' union grown by the twice the radius and the margins
-    /// (so that a box of everything would fail). Shapes whose motion's
-    /// centre lies off them (a local centre up to 0.5 away, as a compound's
-    /// part has), turns of 0 to 3 radians a step (both ways of the box), and
-    /// still shapes.
-    #[test]
-    fn swept_boxes_hold_every_sampled_pose_and_are_tight() {
-        let mut r = Rng::new(55);
-        let dt = 1.0 / 60.0;
-        let reach = 1e-4;
-        const N: usize = 4096;
-        let shapes = [
-            SharedShape::cuboid(1.0, 0.02, 0.3),
-            SharedShape::cylinder(0.3, 0.05),
-            SharedShape::cone(0.3, 0.08),
-            SharedShape::capsule_y(0.2, 0.05),
-            SharedShape::ball(0.05),
-            SharedShape::cuboid(0.005, 4.0, 4.0),
-        ];
-        let v = |r: &mut Rng, s: f64| Vector::new(r.range(-s, s), r.range(-s, s), r.range(-s, s));
-        let (mut turned, mut ball_only) = (0, 0);
-        for case in 0..3000 {
-            let shape = &shapes[case % shapes.len()];
-            let axis = v(&mut r, 1.0).normalize_or(Vector::X);
-            let start = Pose::from_parts(
-                v(&mut r, 10.0),
-                Rotation::from_axis_angle(axis, r.range(0.0, 3.0)),
-            );
-            let (linvel, angvel) = if case % 7 == 0 {
-                (Vector::ZERO, Vector::ZERO)
-            } else {
-                let w = v(&mut r, 1.0).normalize_or(Vector::Y) * r.range(0.0, 3.0) / dt;
-                (v(&mut r, 200.0), w)
-            };
-            let m = NonlinearRigidMotion::new(start, v(&mut r, 0.5), linvel, angvel);
-            let ball = shape.compute_local_bounding_sphere();
-            let radius = (ball.center - m.local_center).length() + ball.radius;
-            let centre = m.start * m.local_center;
-            let boxed = swept_box(&m, shape.as_ref(), centre, radius, dt, reach);
-            let mut union = Aabb::new_invalid();
-            for k in 0..=N {
-                let t = dt * k as f64 / N as f64;
-                let a = shape.compute_aabb(&m.position_at_time(t));
-                assert!(
-                    boxed.contains(&a),
-                    "case {case}: the pose at {t} ({a:?}) is outside {boxed:?}"
-                );
-                union.merge(&a);
-            }
-            let turn = angvel.length() * dt;
-            turned += usize::from(turn > 0.0 && turn < 1.0);
-            ball_only += usize::from(turn >= 1.0);
-            let loose = union.loosened(2.0 * radius + 2.0 * reach + 1e-6);
-            assert!(
-                loose.contains(&boxed),
-                "case {case}: {boxed:?} is more than twice the radius {radius} off the sampled {union:?}"
-            );
-        }
-        assert!(turned > 500 && ball_only > 500, "{turned} {ball_only}");
-    }
-
-    fn placed(r: &mut Rng) -> Placed {
-        let v = |r: &mut Rng, s: f64| Vector::new(r.range(-s, s), r.range(-s, s), r.range(-s, s));
-        Placed {
-            body: None,
-            centre: v(r, 1.0),
-            velocity: v(r, 150.0),
-            radius: r.range(0.0, 0.5),
-            motion: NonlinearRigidMotion::constant_position(Pose::IDENTITY),
-            swept: parry3d_f64::bounding_volume::Aabb::new_invalid(),
-            handle: ColliderHandle::invalid(),
-        }
-    }
-
-    /// Against dense sampling of the centres' distance: a pair that comes
-    /// within reach at a sample is never said apart, and a pair that stays
-    /// well apart at every sample (by more than the centres move between
-    /// samples) is.
-    #[test]
-    fn bounding_balls_are_said_apart_exactly_when_sampling_finds_them_apart() {
-        let mut r = Rng::new(17);
-        let dt = 1.0 / 60.0;
-        let reach = 1e-3;
-        const N: usize = 4096;
-        let (mut apart, mut near) = (0, 0);
-        for _ in 0..20_000 {
-            let (a, b) = (placed(&mut r), placed(&mut r));
-            let need = a.radius + b.radius + reach;
-            let least = (0..=N)
-                .map(|k| {
-                    let t = dt * k as f64 / N as f64;
-                    ((b.centre + b.velocity * t) - (a.centre + a.velocity * t)).length()
-                })
-                .fold(f64::INFINITY, f64::min);
-            let said = a.apart_over(&b, dt, reach);
-            assert_eq!(said, b.apart_over(&a, dt, reach));
-            if least <= need {
-                assert!(!said, "sampled {least} within {need}, said apart");
-                near += 1;
-            }
-            let step = (b.velocity - a.velocity).length() * dt / N as f64;
-            if least > need + step + 1e-6 {
-                assert!(said, "sampled {least} beyond {need} by more than {step}");
-                apart += 1;
-            }
-        }
-        // Both kinds occur.
-        assert!(apart > 2000 && near > 2000, "apart {apart}, near {near}");
-    }
-}
+#[path = "rapier/tests.rs"]
+mod tests;

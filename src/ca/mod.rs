@@ -79,7 +79,7 @@ pub use outcome::{CaOutcome, CaReport, Contact, ContactCriterion, Witness, Work}
 pub use owned::{Hull, OwnedCompound, OwnedMesh, OwnedPart, OwnedShape, PreparedShape, Primitive};
 pub use params::{BoundChoice, CaError, CaParams, MeshParams, Parameter, WitnessSearch};
 #[cfg(feature = "alloc")]
-pub use past_contact::{past_contact, PastContact};
+pub use past_contact::{past_contact, past_contact_below, Below, Ceiling, PastContact};
 #[cfg(feature = "alloc")]
 pub use shape::{Compound, Part, Shape, ShapeKind};
 pub use step::{gap_step, placement_error, CaStep, StepResult};

@@ -376,8 +376,10 @@ impl<'a, T: Float> Convex<'a, T> {
         sum_up(self.placed_core_reach(), self.radius)
     }
 
-    /// An upper bound of `|r|` over the placed core's points.
-    fn placed_core_reach(&self) -> T {
+    /// An upper bound of `|r|` over the placed core's points (the points
+    /// whose turn moves the shape's support: its radius around the core
+    /// does not turn).
+    pub(crate) fn placed_core_reach(&self) -> T {
         match self.placed {
             Some(pose) => {
                 let t = pose.translation();

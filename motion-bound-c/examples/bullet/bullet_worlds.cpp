@@ -4,7 +4,7 @@
 //
 // Each world is launched N times (argument 1, default 40; each launch a seed:
 // random start poses, velocities and spins) and stepped 150 times at
-// dt = 1/60 with gravity off, twice with the same launches (argument 2, a
+// dt = 1/60 with gravity off (on in stack), twice with the same launches (argument 2, a
 // world's name, runs that world alone):
 //
 // - bullet: Bullet's own CCD on every dynamic body (setCcdMotionThreshold,
@@ -12,25 +12,35 @@
 // - ours: the same, and after each step the certified pass: each dynamic
 //   body's actual motion over the step (its pose before and after
 //   stepSimulation, as a constant-velocity motion: mb_motion_between) cast
-//   against every other body with mb_time_of_impact, and every body moved
-//   back to its pose on that motion at the earliest time of impact of its
-//   pairs. A pair already within the contact distance at the start (a body
-//   stopped there by the last step, or resting against the other) is cast
-//   once more, against the half-space just past the plane that separated
-//   it at the start (mb_past_contact, along the report's normal): no hit
-//   when it slides along or leaves, else the first time it may go deeper. Only when that is not
-//   decided (both bodies rotating) or the pair is already deeper than the
-//   contact distance is it asked again with a contact distance half its
-//   gap, so that a corner cutting in and out within the step is still
-//   found, and a pair touching exactly held at the start if the step
-//   leaves it deeper. The pass's time is counted in the step's. Set
-//   BULLET_WORLDS_DEBUG=1 to print every cast and every tunnelled step.
+//   against every other body with mb_time_of_impact, unless certified apart
+//   first (the segments its origin and the other's sweep, grown by their
+//   reaches: apart wherever either stops; a fixed body by its box), and the
+//   bodies moved back to their poses on those motions at the earliest time
+//   of impact of their group (the dynamic bodies of the pairs examined stop
+//   together). A pair within the contact distance at the start (a body
+//   stopped there by the last step, or resting on the other) asks
+//   mb_past_contact_below along the report's normal (proofs/12-shapes.md,
+//   Lemma 12.14): its overlap along that normal may reach a ceiling (the
+//   start's plus the contact distance, or the floor, the checker's
+//   tolerance, when that is more), and the pair is stopped at the first
+//   time it may pass it. The pass carries each touching pair's normal and
+//   ceiling to the next step and asks that first: a resting or sliding pair
+//   is decided by the closed form (no cast), a held pair keeps its ceiling,
+//   and no ceiling rises above the one carried, so nothing creeps in. Only
+//   when the rule cannot decide (both bodies turning fast) is the pair asked
+//   again with a contact distance half its gap, and touching exactly held
+//   at the start if the step leaves it deeper. The pass's time is counted
+//   in the step's. Set BULLET_WORLDS_DEBUG=1 to print every cast and every
+//   tunnelled or late step; BULLET_WORLDS_NO_CHECK=1 skips the checker (for
+//   instruction counts; then a third argument, bullet or ours, runs one
+//   setup).
 //
 // Worlds: board (a thin board flying and spinning fast at a thin wall), bat
 // (a long thin capsule spinning in place beside a thin wall: pure rotation),
 // bullets (two small balls head-on at 15 to 60 m/s each), plate (a cube,
 // for motion-bound a triangle mesh, falling at 20 to 150 m/s and spinning
-// onto a triangle-mesh plate of zero thickness).
+// onto a triangle-mesh plate of zero thickness), stack (four columns of five
+// cubes resting on a floor under gravity, placed 1e-3 apart).
 //
 // The checker does not use the certified cast: for each step and each pair
 // (a dynamic body and any other), the recorded poses before and after the
@@ -48,6 +58,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <map>
+#include <utility>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -143,6 +155,13 @@ struct World {
     std::vector<std::unique_ptr<btRigidBody>> rbs;
     // The checker's objects (plain shapes at sampled poses).
     std::vector<std::unique_ptr<btCollisionObject>> probes;
+    // The pass's pairs touching at the last step's start: the normal their
+    // overlap is taken along and its ceiling (mb_past_contact_below).
+    struct Touching {
+        mb_vec3 normal;
+        mb_ceiling ceiling;
+    };
+    std::map<std::pair<size_t, size_t>, Touching> touching;
 
     World() { world.setGravity(btVector3(0, 0, 0)); }
     ~World() {
@@ -241,6 +260,25 @@ void build(World &w, const std::string &name, Rng &rng) {
                             0.9 * r);
             b.ball_radius = r;
         }
+    } else if (name == "stack") {
+        // Four columns of five cubes (half side 0.1) resting on a fixed
+        // floor under gravity, placed 1e-3 apart and jittered.
+        w.world.setGravity(btVector3(0, 0, btScalar(-9.81)));
+        w.add(new btBoxShape(btVector3(4, 4, 0.1f)), ours_box(4, 4, 0.1),
+              0, btTransform(btQuaternion::getIdentity(), btVector3(0, 0, btScalar(-0.1))),
+              btVector3(0, 0, 0), btVector3(0, 0, 0), 6, 0);
+        const double h = 0.1;
+        for (int col = 0; col < 4; col++) {
+            for (int level = 0; level < 5; level++) {
+                btVector3 at(btScalar((col % 2) * 0.6 - 0.3 + rng.in(-0.01, 0.01)),
+                             btScalar((col / 2) * 0.6 - 0.3 + rng.in(-0.01, 0.01)),
+                             btScalar(h + 1e-3 + level * (2 * h + 1e-3)));
+                btQuaternion turn(btVector3(0, 0, 1), btScalar(rng.in(-0.1, 0.1)));
+                w.add(new btBoxShape(btVector3(btScalar(h), btScalar(h), btScalar(h))),
+                      ours_box(h, h, h), 1, btTransform(turn, at), btVector3(0, 0, 0),
+                      btVector3(0, 0, 0), h * std::sqrt(3.0), 0.09);
+            }
+        }
     } else if (name == "plate") {
         // The plate [-5, 5]^2 in z = 0: two triangles, in both libraries.
         auto *tm = new btTriangleMesh();
@@ -275,10 +313,56 @@ void build(World &w, const std::string &name, Rng &rng) {
     }
 }
 
+// The least distance between the segments [p0, p1] and [q0, q1] (Ericson,
+// Real-Time Collision Detection, 5.1.9), in double.
+double segment_distance(const btVector3 &p0, const btVector3 &p1, const btVector3 &q0,
+                        const btVector3 &q1) {
+    double d1[3], d2[3], r[3];
+    for (int k = 0; k < 3; k++) {
+        d1[k] = double(p1[k]) - double(p0[k]);
+        d2[k] = double(q1[k]) - double(q0[k]);
+        r[k] = double(p0[k]) - double(q0[k]);
+    }
+    auto dot = [](const double *a, const double *b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
+    double s = 0, t = 0;
+    if (a <= 1e-300 && e <= 1e-300) {
+        s = t = 0;
+    } else if (a <= 1e-300) {
+        t = std::clamp(f / e, 0.0, 1.0);
+    } else {
+        double c = dot(d1, r);
+        if (e <= 1e-300) {
+            s = std::clamp(-c / a, 0.0, 1.0);
+        } else {
+            double b = dot(d1, d2), denom = a * e - b * b;
+            s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+            t = (b * s + f) / e;
+            if (t < 0) {
+                t = 0;
+                s = std::clamp(-c / a, 0.0, 1.0);
+            } else if (t > 1) {
+                t = 1;
+                s = std::clamp((b - c) / a, 0.0, 1.0);
+            }
+        }
+    }
+    double x = 0;
+    for (int k = 0; k < 3; k++) {
+        double d = r[k] + d1[k] * s - d2[k] * t;
+        x += d * d;
+    }
+    return std::sqrt(x);
+}
+
 // The certified pass: every dynamic body moved back to its earliest time of
 // impact along the motion it made over the step.
 // Returns how many bodies it held (nearly) at their start pose.
 int certified_pass(World &w, const std::vector<btTransform> &before, const mb_params &p) {
+    // The overlap a touching pair may always reach (Lemma 12.14's floor):
+    // the checker's tolerance (Bullet's own stack settles 0.012 to 0.016
+    // deep, so a smaller floor holds resting boxes step after step).
+    const double floor = TOL;
     size_t n = w.bodies.size();
     std::vector<btTransform> after(n);
     std::vector<mb_motion *> motion(n, nullptr);
@@ -293,10 +377,74 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
                                             &motion[i]),
                   "still");
     }
+    std::map<std::pair<size_t, size_t>, World::Touching> touching_next;
+    // Dynamic bodies of pairs examined (not apart by their segments) stop
+    // together, at their group's earliest time: each pair's answer holds
+    // along both motions up to it (a body stopped alone while the other
+    // moved on would leave that pair uncertified).
+    std::vector<size_t> group(n);
+    for (size_t k = 0; k < n; k++) group[k] = k;
+    auto root = [&](size_t k) {
+        while (group[k] != k) k = group[k] = group[group[k]];
+        return k;
+    };
+    auto link = [&](size_t a, size_t b) { group[root(a)] = root(b); };
     for (size_t i = 0; i < n; i++) {
         if (!w.bodies[i].dynamic) continue;
         for (size_t j = 0; j < n; j++) {
             if (j == i || (w.bodies[j].dynamic && j < i)) continue;
+            // Certified apart without a cast, wherever either stops: each
+            // body stays within its reach of its origin, which moves along a
+            // segment over the step (mb_motion_between turns about it); the
+            // segments' least distance in closed form (in double, from
+            // Bullet's exact floats; the margin covers its roundings).
+            if (w.bodies[j].dynamic) {
+                double least = segment_distance(before[i].getOrigin(), after[i].getOrigin(),
+                                                before[j].getOrigin(), after[j].getOrigin());
+                double need = w.bodies[i].reach + w.bodies[j].reach + p.contact_distance;
+                if (least > need * (1 + 1e-9) + 1e-9) continue;
+                // Examined: the two stop together (below).
+                link(i, j);
+            }
+            // A fixed body: its box (Bullet's, margin included) against the
+            // box of the moving body's ball along its origin's segment.
+            if (!w.bodies[j].dynamic) {
+                btVector3 lo, hi;
+                w.bodies[j].shape->getAabb(before[j], lo, hi);
+                bool meets = true;
+                double grow = w.bodies[i].reach + p.contact_distance + 1e-6;
+                for (int k = 0; k < 3; k++) {
+                    double a = double(before[i].getOrigin()[k]), b = double(after[i].getOrigin()[k]);
+                    if (std::min(a, b) - grow > double(hi[k]) || std::max(a, b) + grow < double(lo[k]))
+                        meets = false;
+                }
+                if (!meets) continue;
+            }
+            // Touching at the last step's start: first the rule along that
+            // step's normal with the ceiling carried (a resting or sliding
+            // pair is decided by its closed form, no cast).
+            auto key = std::make_pair(i, j);
+            auto carried = w.touching.find(key);
+            const mb_ceiling *last = nullptr;
+            mb_below_report carried_below;
+            if (carried != w.touching.end()) {
+                last = &carried->second.ceiling;
+                mb_below_report &below = carried_below;
+                check(mb_past_contact_below(w.bodies[i].ours, motion[i], w.bodies[j].ours,
+                                            motion[j], carried->second.normal, last, floor, &p,
+                                            &below),
+                      "past contact below");
+                if (std::getenv("BULLET_WORLDS_DEBUG"))
+                    std::fprintf(stderr,
+                                 "carried (%zu, %zu): outcome %d time %g overlap %g ceiling %g "
+                                 "held %u cast %u\n",
+                                 i, j, int(below.outcome), below.time, below.overlap,
+                                 below.ceiling.value, below.ceiling.held, below.cast);
+                if (below.outcome == MB_PAST_OUTCOME_NEVER) {
+                    touching_next[key] = {carried->second.normal, below.ceiling};
+                    continue;
+                }
+            }
             mb_report r;
             check(mb_time_of_impact(w.bodies[i].ours, motion[i], w.bodies[j].ours, motion[j], &p,
                                     &r),
@@ -307,22 +455,32 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
                              r.normal.z);
             if (r.outcome == MB_OUTCOME_SEPARATED) continue;
             double t = r.time;
-            if (r.outcome == MB_OUTCOME_INITIAL_CONTACT && std::isfinite(r.normal.x)) {
-                // Within the contact distance at the start (a body stopped
-                // or resting there): does it go deeper along the start's
-                // normal? One cast against the half-space just past the
-                // separating plane (no hit when it slides along or leaves).
-                mb_past_report past;
-                check(mb_past_contact(w.bodies[i].ours, motion[i], w.bodies[j].ours, motion[j],
-                                      r.normal, &p, &past),
-                      "past contact");
+            // Touching at the start: the rule along the carried normal, or
+            // for a pair apart (within the contact distance) along the
+            // report's normal, the direction of its closest points. An
+            // overlapping pair's report has no trustworthy normal: along a
+            // direction it overlaps much more than its depth, a ceiling
+            // means nothing; such a pair not carried goes to the depths
+            // below.
+            bool carried_here = carried != w.touching.end();
+            bool apart_normal = r.outcome == MB_OUTCOME_INITIAL_CONTACT && r.distance > 0 &&
+                                std::isfinite(r.normal.x);
+            if (r.outcome == MB_OUTCOME_INITIAL_CONTACT && (carried_here || apart_normal)) {
+                mb_vec3 normal = carried_here ? carried->second.normal : r.normal;
+                mb_below_report below = carried_below;
+                if (!carried_here)
+                    check(mb_past_contact_below(w.bodies[i].ours, motion[i], w.bodies[j].ours,
+                                                motion[j], normal, last, floor, &p, &below),
+                          "past contact below");
                 if (std::getenv("BULLET_WORLDS_DEBUG"))
-                    std::fprintf(stderr, "  past contact: outcome %d time %g\n", int(past.outcome),
-                                 past.time);
-                if (past.outcome == MB_PAST_OUTCOME_NEVER) continue;
-                if (past.outcome == MB_PAST_OUTCOME_AT && past.time > 0) {
-                    stop[i] = std::min(stop[i], past.time);
-                    if (w.bodies[j].dynamic) stop[j] = std::min(stop[j], past.time);
+                    std::fprintf(stderr, "  past contact: outcome %d time %g\n",
+                                 int(below.outcome), below.time);
+                if (below.outcome != MB_PAST_OUTCOME_UNDECIDED)
+                    touching_next[key] = {normal, below.ceiling};
+                if (below.outcome == MB_PAST_OUTCOME_NEVER) continue;
+                if (below.outcome == MB_PAST_OUTCOME_AT) {
+                    stop[i] = std::min(stop[i], below.time);
+                    if (w.bodies[j].dynamic) stop[j] = std::min(stop[j], below.time);
                     continue;
                 }
             }
@@ -351,6 +509,10 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
             if (w.bodies[j].dynamic) stop[j] = std::min(stop[j], t);
         }
     }
+    w.touching.swap(touching_next);
+    std::vector<double> first(n, DT);
+    for (size_t k = 0; k < n; k++) first[root(k)] = std::min(first[root(k)], stop[k]);
+    for (size_t k = 0; k < n; k++) stop[k] = first[root(k)];
     int held = 0;
     for (size_t i = 0; i < n; i++) {
         held += w.bodies[i].dynamic && stop[i] < 1e-3 * DT;
@@ -423,8 +585,12 @@ Verdict judge(World &w, const std::vector<btTransform> &before, const std::vecto
                                  i, j, int(crossed), d_start, d_end, d_max, c0.x(), c0.y(), c0.z(),
                                  c1.x(), c1.y(), c1.z());
             }
-            else if (d_end > TOL)
+            else if (d_end > TOL) {
                 v.late = true;
+                if (std::getenv("BULLET_WORLDS_DEBUG"))
+                    std::fprintf(stderr, "late: pair (%zu, %zu) depth start %g end %g\n", i, j,
+                                 d_start, d_end);
+            }
         }
     }
     return v;
@@ -441,6 +607,8 @@ Tally run(const std::string &name, int launches, bool ours) {
     Tally t;
     mb_params p = mb_params_default();
     p.contact_distance = 1e-3;
+    if (std::getenv("BULLET_WORLDS_DEBUG"))
+        std::fprintf(stderr, "run %s, %s\n", name.c_str(), ours ? "ours" : "bullet");
     for (int launch = 0; launch < launches; launch++) {
         Rng rng(1000 * (unsigned long long)(launch + 1) + name.size());
         World w;
@@ -457,6 +625,8 @@ Tally run(const std::string &name, int launches, bool ours) {
             t.step_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             t.steps++;
             for (size_t i = 0; i < n; i++) after[i] = w.bodies[i].rb->getWorldTransform();
+            // BULLET_WORLDS_NO_CHECK=1: no checker (for instruction counts).
+            if (std::getenv("BULLET_WORLDS_NO_CHECK")) continue;
             Verdict v = judge(w, before, after);
             if (v.tunnelled && ours && std::getenv("BULLET_WORLDS_DEBUG"))
                 std::fprintf(stderr, "  %s launch %d step %d\n", name.c_str(), launch, s);
@@ -474,23 +644,26 @@ Tally run(const std::string &name, int launches, bool ours) {
 
 int main(int argc, char **argv) {
     int launches = argc > 1 ? std::atoi(argv[1]) : 40;
-    // An optional second argument runs one world (for profiling).
+    // An optional second argument runs one world, a third one setup
+    // ("bullet" or "ours"; for profiling).
     const char *only = argc > 2 ? argv[2] : nullptr;
+    const char *mode = argc > 3 ? argv[3] : nullptr;
     if (launches <= 0) {
-        std::fprintf(stderr, "usage: bullet_worlds [launches > 0] [board|bat|bullets|plate]\n");
+        std::fprintf(stderr, "usage: bullet_worlds [launches > 0] [board|bat|bullets|plate|stack] [bullet|ours]\n");
         return 2;
     }
     std::printf("%d launches x %d steps per world, dt = 1/60, tolerance %.3g\n", launches, STEPS,
                 TOL);
-    for (const char *name : {"board", "bat", "bullets", "plate"}) {
+    for (const char *name : {"board", "bat", "bullets", "plate", "stack"}) {
         if (only && std::strcmp(only, name) != 0) continue;
-        Tally b = run(name, launches, false);
-        Tally o = run(name, launches, true);
+        bool both = !mode;
+        Tally b = both || std::strcmp(mode, "bullet") == 0 ? run(name, launches, false) : Tally();
+        Tally o = both || std::strcmp(mode, "ours") == 0 ? run(name, launches, true) : Tally();
         std::printf(
             "world %s: tunnelled bullet %d ours %d, late bullet %d ours %d, ms per step bullet %.4f "
             "ours %.4f\n",
-            name, b.tunnelled, o.tunnelled, b.late, o.late, 1e3 * b.step_seconds / b.steps,
-            1e3 * o.step_seconds / o.steps);
+            name, b.tunnelled, o.tunnelled, b.late, o.late,
+            1e3 * b.step_seconds / std::max(b.steps, 1L), 1e3 * o.step_seconds / std::max(o.steps, 1L));
         // A body the pass holds at its start pose step after step would also
         // count 0: how many launches end that way.
         std::printf("  (ours held a body at its start pose in the last step in %d of %d launches)\n",

@@ -1073,6 +1073,56 @@ static void test_past_contact(void) {
     mb_shape_free(cube);
 }
 
+/* mb_past_contact_below: a cube resting on the plate (drifting 1e-4 a step)
+ * is decided by the closed form, no cast; pressed down at 1 m/s, the time
+ * it may reach its ceiling (the start's overlap, or zero, plus d; or the
+ * floor) is between its closed-form bounds; a held ceiling is kept; bad
+ * arguments are named. */
+static void test_past_contact_below(void) {
+    const double d = 1e-3, gap = 0.5e-3, h = 0.1, dt = 1.0 / 60.0;
+    mb_params p = mb_params_default();
+    p.contact_distance = d;
+    mb_shape *cube = cube_mesh(h, MB_MESH_SOLIDITY_AUTO);
+    mb_shape *plate = plate_mesh();
+    mb_motion *still = moving(at(0, 0, 0), ZERO, ZERO, dt);
+    mb_motion *rest = moving(at(0.3, -0.2, h + gap), v3(6e-3, 0, -6e-3), ZERO, dt);
+    mb_below_report below;
+    OK(mb_past_contact_below(cube, rest, plate, still, v3(0, 0, -1), NULL, 0.0, &p, &below));
+    CHECK(below.outcome == MB_PAST_OUTCOME_NEVER && below.cast == 0 && below.ceiling.held == 0 &&
+              fabs(below.ceiling.value - d) < 1e-9 && fabs(below.overlap + gap) < 1e-9,
+          "resting: outcome %d cast %u ceiling %g overlap %g", (int)below.outcome, below.cast,
+          below.ceiling.value, below.overlap);
+    /* The floor raises the ceiling. */
+    OK(mb_past_contact_below(cube, rest, plate, still, v3(0, 0, -1), NULL, 5e-3, &p, &below));
+    CHECK(below.outcome == MB_PAST_OUTCOME_NEVER && below.ceiling.value == 5e-3,
+          "floor: ceiling %g", below.ceiling.value);
+    mb_motion *press = moving(at(0.3, -0.2, h + gap), v3(0, 0, -1), ZERO, dt);
+    OK(mb_past_contact_below(cube, press, plate, still, v3(0, 0, -1), NULL, 0.0, &p, &below));
+    /* The cast's contact distance is min(d, room / 2), room = d + gap; it
+     * answers once within it of the plane at overlap d, never within half. */
+    double delta = fmin(d, 0.5 * (d + gap));
+    double lo = gap + d - delta, hi = gap + d - 0.5 * delta;
+    CHECK(below.outcome == MB_PAST_OUTCOME_AT && below.cast != 0 && below.ceiling.held != 0 &&
+              below.time >= lo * (1 - 1e-9) && below.time <= hi * (1 + 1e-9),
+          "pressed: outcome %d time %g not in [%g, %g]", (int)below.outcome, below.time, lo, hi);
+    /* Held: the ceiling is kept (here below the start's overlap plus d). */
+    mb_ceiling last = {0.2e-3, 1};
+    OK(mb_past_contact_below(cube, press, plate, still, v3(0, 0, -1), &last, 0.0, &p, &below));
+    CHECK(below.ceiling.value == 0.2e-3 && below.outcome == MB_PAST_OUTCOME_AT,
+          "held: ceiling %g outcome %d", below.ceiling.value, (int)below.outcome);
+    FAILS(mb_past_contact_below(cube, press, plate, still, v3(0, 0, -1), NULL, 0.0, &p, NULL),
+          MB_STATUS_NULL_POINTER, "out is NULL");
+    FAILS(mb_past_contact_below(cube, press, NULL, still, v3(0, 0, -1), NULL, 0.0, &p, &below),
+          MB_STATUS_NULL_POINTER, "shape_b is NULL");
+    FAILS(mb_past_contact_below(cube, press, plate, still, ZERO, NULL, 0.0, &p, &below),
+          MB_STATUS_INVALID_INPUT, "normal: the zero vector");
+    mb_motion_free(press);
+    mb_motion_free(rest);
+    mb_motion_free(still);
+    mb_shape_free(plate);
+    mb_shape_free(cube);
+}
+
 int main(void) {
     CHECK(strcmp(mb_last_error_message(), "") == 0, "a message before any failure");
     test_version_and_params();
@@ -1087,6 +1137,7 @@ int main(void) {
     test_threads();
     test_batch();
     test_past_contact();
+    test_past_contact_below();
     if (failures) {
         fprintf(stderr, "%d of %d checks FAILED\n", failures, checks);
         return 1;

@@ -5,12 +5,12 @@
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 
-use motion_bound::ca::CaParams;
+use motion_bound::ca::{CaParams, Ceiling};
 
 use super::cache::ShapeCache;
 use super::error::CastError;
 use super::parry;
-use super::past_contact::PastContact;
+use super::past_contact::{past_contact_below_parry, past_contact_parry, PastContact, Touching};
 use super::swept::Swept;
 use parry::math::{Pose, Real, Vector};
 use parry::query::{
@@ -187,6 +187,65 @@ impl CertifiedDispatcher {
         )?;
         self.counters.certified.fetch_add(1, Ordering::Relaxed);
         Ok(hit)
+    }
+}
+
+impl CertifiedDispatcher {
+    /// For shapes touching at `start_time`: whether shape 1 goes deeper
+    /// into shape 2 over `[start_time, end_time]`, with nothing carried
+    /// (`past_contact.rs`; the core's Lemma 12.11).
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn past_contact(
+        &self,
+        motion1: &NonlinearRigidMotion,
+        g1: &dyn Shape,
+        motion2: &NonlinearRigidMotion,
+        g2: &dyn Shape,
+        start_time: Real,
+        end_time: Real,
+    ) -> PastContact {
+        past_contact_parry(
+            &self.cache,
+            &self.params,
+            motion1,
+            g1,
+            motion2,
+            g2,
+            start_time,
+            end_time,
+        )
+    }
+
+    /// The same rule along `normal` (parry's contact normal at the start
+    /// when `None`) with the ceiling `last` carried from the last step
+    /// (`past_contact.rs`; the core's Lemma 12.14).
+    #[allow(clippy::too_many_arguments)]
+    #[allow(dead_code)] // the rapier pass's: the f64 adapter's, with the `rapier` feature
+    pub(crate) fn touching(
+        &self,
+        motion1: &NonlinearRigidMotion,
+        g1: &dyn Shape,
+        motion2: &NonlinearRigidMotion,
+        g2: &dyn Shape,
+        start_time: Real,
+        end_time: Real,
+        normal: Option<Vector>,
+        last: Option<Ceiling<Real>>,
+        floor: Real,
+    ) -> Option<Touching> {
+        past_contact_below_parry(
+            &self.cache,
+            &self.params,
+            motion1,
+            g1,
+            motion2,
+            g2,
+            start_time,
+            end_time,
+            normal,
+            last,
+            floor,
+        )
     }
 }
 
