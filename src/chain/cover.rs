@@ -24,7 +24,6 @@ const MAX_SPLIT: usize = 48;
 /// The most pieces a link is cut into (a coarser piece size above it).
 const MAX_PIECES: usize = 6_000;
 
-
 /// Balls in the link frame whose union holds every triangle of the link.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct LinkCover {
@@ -46,7 +45,6 @@ pub(crate) struct LinkCover {
 struct Part {
     centre: [f64; 3],
 }
-
 
 fn sub(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
@@ -279,12 +277,20 @@ fn deep_cover(
                 seen[i as usize] = true;
             }
         }
-        v.iter().zip(seen).filter(|(_, s)| *s).map(|(p, _)| *p).collect()
+        v.iter()
+            .zip(seen)
+            .filter(|(_, s)| *s)
+            .map(|(p, _)| *p)
+            .collect()
     };
     let dirs = directions(128);
     let support: Vec<f64> = dirs
         .iter()
-        .map(|u| used.iter().map(|p| p[0] * u[0] + p[1] * u[1] + p[2] * u[2]).fold(f64::MIN, f64::max))
+        .map(|u| {
+            used.iter()
+                .map(|p| p[0] * u[0] + p[1] * u[1] + p[2] * u[2])
+                .fold(f64::MIN, f64::max)
+        })
         .collect();
     let depth = |c: [f64; 3]| {
         dirs.iter()
@@ -350,8 +356,11 @@ fn deep_cover(
             .iter()
             .map(|l| &l[..l.partition_point(|&(need, _)| f64::from(need) <= eps)])
             .collect();
-        let mut heap: alloc::collections::BinaryHeap<(usize, usize)> =
-            takes.iter().enumerate().map(|(k, t)| (t.len(), k)).collect();
+        let mut heap: alloc::collections::BinaryHeap<(usize, usize)> = takes
+            .iter()
+            .enumerate()
+            .map(|(k, t)| (t.len(), k))
+            .collect();
         let mut left = n;
         let mut groups: Vec<([f64; 3], Vec<u32>)> = Vec::new();
         while left > 0 && groups.len() <= 4 * max_balls {
@@ -359,7 +368,10 @@ fn deep_cover(
             if stale == 0 {
                 break;
             }
-            let gain = takes[k].iter().filter(|&&(_, q)| !covered[q as usize]).count();
+            let gain = takes[k]
+                .iter()
+                .filter(|&&(_, q)| !covered[q as usize])
+                .count();
             if gain < stale {
                 heap.push((gain, k));
                 continue;
@@ -389,7 +401,11 @@ fn deep_cover(
         }
         eps *= 1.4;
     }
-    best.unwrap_or_default()
+    match best {
+        Some(b) if b.len() <= max_balls => b,
+        // No `eps` fitted: the top-down split alone, which always does.
+        _ => split_groups(pieces, (0..n as u32).collect(), max_balls),
+    }
 }
 
 /// The pieces `rest` in at most `count` groups by the top-down split, each
@@ -397,7 +413,10 @@ fn deep_cover(
 fn split_groups(pieces: &Pieces, mut rest: Vec<u32>, count: usize) -> Vec<([f64; 3], Vec<u32>)> {
     let mut parts = alloc::vec![(0usize, rest.len())];
     while parts.len() < count {
-        let Some(i) = (0..parts.len()).filter(|&i| parts[i].1 - parts[i].0 >= 2).max_by_key(|&i| parts[i].1 - parts[i].0) else {
+        let Some(i) = (0..parts.len())
+            .filter(|&i| parts[i].1 - parts[i].0 >= 2)
+            .max_by_key(|&i| parts[i].1 - parts[i].0)
+        else {
             break;
         };
         let (lo, hi) = parts[i];
@@ -469,6 +488,20 @@ mod tests {
     fn check_cover(vertices: &[[f64; 3]], triangles: &[[u32; 3]], balls: usize) {
         let cover = LinkCover::fit(vertices, triangles, balls).expect("a cover");
         assert!(cover.len() <= balls.max(1), "{} balls", cover.len());
+        assert!(
+            held_all(vertices, triangles, &cover, 1.0),
+            "a point in no ball"
+        );
+    }
+
+    /// Whether every sampled point is in some ball with radii scaled by `scale`.
+    fn held_all(
+        vertices: &[[f64; 3]],
+        triangles: &[[u32; 3]],
+        cover: &LinkCover,
+        scale: f64,
+    ) -> bool {
+        let mut all = true;
         let n = 40;
         for t in triangles {
             let [a, b, c] = t.map(|i| vertices[i as usize]);
@@ -476,16 +509,38 @@ mod tests {
                 for j in 0..=(n - i) {
                     let (s, u) = (f64::from(i) / f64::from(n), f64::from(j) / f64::from(n));
                     let p = [0, 1, 2].map(|k| a[k] + s * (b[k] - a[k]) + u * (c[k] - a[k]));
-                    let held = |k: usize| norm(sub(p, cover.centre_f64(k))) <= f64::from(cover.r[k]);
-                    assert!(
-                        (0..cover.len()).any(held),
-                        "point {p:?} of triangle {t:?} is in no ball"
-                    );
+                    let held = |k: usize| {
+                        norm(sub(p, cover.centre_f64(k))) <= f64::from(cover.r[k]) * scale
+                    };
+                    all &= (0..cover.len()).any(held);
                     let e = norm(sub(p, cover.centre.map(f64::from)));
-                    assert!(e <= f64::from(cover.radius), "outside the enclosing ball");
+                    all &= e <= f64::from(cover.radius) * scale;
                 }
             }
         }
+        all
+    }
+
+    #[test]
+    fn covers_with_smaller_radii_leave_points_out() {
+        // The containment checks have power: 2 % less radius leaves a
+        // sampled point of some random mesh out.
+        let mut rng = crate::rng::SplitMix64::new(7);
+        let mut out = 0;
+        for case in 0..30 {
+            let v: Vec<[f64; 3]> = (0..12)
+                .map(|_| [0; 3].map(|_| rng.range(-1.0, 1.0)))
+                .collect();
+            let t: Vec<[u32; 3]> = (0..10)
+                .map(|_| [0; 3].map(|_| (rng.next_u64() % 12) as u32))
+                .collect();
+            let cover = LinkCover::fit(&v, &t, 1 + case % 20).expect("a cover");
+            out += usize::from(!held_all(&v, &t, &cover, 0.98));
+        }
+        assert!(
+            out > 10,
+            "only {out} of 30 covers lose a point at 0.98 of their radii"
+        );
     }
 
     #[test]

@@ -249,10 +249,7 @@ impl<T: Float> Edge<'_, T> {
                 w.items.push(initial[fails[i].2 as usize]);
                 i += 1;
             }
-            let span = [
-                T::from_u32(first) * scale,
-                T::from_u32(first + 1) * scale,
-            ];
+            let span = [T::from_u32(first) * scale, T::from_u32(first + 1) * scale];
             level.push((span, start, w.items.len()));
         }
         let found = if self.first_contact {
@@ -394,10 +391,13 @@ impl<T: Float> Edge<'_, T> {
                         // the halves found so far and the spans not yet
                         // taken (not in time order when the rake put
                         // urgent ones first).
-                        let pending = next
-                            .iter()
-                            .chain(&level[at + 1..])
-                            .fold(span[0], |m, i| if i.0[0] < m { i.0[0] } else { m });
+                        let pending = next.iter().chain(&level[at + 1..]).fold(span[0], |m, i| {
+                            if i.0[0] < m {
+                                i.0[0]
+                            } else {
+                                m
+                            }
+                        });
                         result = Err((pending, stop));
                         break 'levels;
                     }

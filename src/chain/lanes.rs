@@ -101,7 +101,9 @@ impl LaneChain {
                     child: joint.spec.child,
                     origin: pose32(&joint.spec.origin),
                     axis: joint.axis.to_array().map(|x| x.to_f64() as f32),
-                    dof: joint.dof.map(|d| (d, joint.spec.kind != JointKind::Prismatic)),
+                    dof: joint
+                        .dof
+                        .map(|d| (d, joint.spec.kind != JointKind::Prismatic)),
                 }
             })
             .collect();
@@ -201,8 +203,9 @@ fn compose_turn(a: &LanePose, axis: [f32; 3], c: &Lane, s: &Lane) -> LanePose {
     for i in 0..3 {
         for k in 0..3 {
             for l in 0..LANES {
-                out.r[i][k][l] =
-                    a.r[i][0][l] * m[0][k][l] + a.r[i][1][l] * m[1][k][l] + a.r[i][2][l] * m[2][k][l];
+                out.r[i][k][l] = a.r[i][0][l] * m[0][k][l]
+                    + a.r[i][1][l] * m[1][k][l]
+                    + a.r[i][2][l] * m[2][k][l];
             }
         }
     }
@@ -215,23 +218,39 @@ mod tests {
     use crate::chain::{ChainBuilder, JointSpec};
     use crate::Vec3;
 
-    /// The lanes' placements agree with `f64` forward kinematics within
-    /// Lemma 13.10's `delta` (a loose check: `1e-5` here; the tight one is
-    /// the rake's tests against dense sampling).
+    /// The lanes' placements of points within 0.5 of each link frame's
+    /// origin agree with `f64` forward kinematics (itself within about
+    /// `1e-15` of exact) within Lemma 13.10's `delta`, over many chains
+    /// (that bound has room: the largest error seen is printed).
     #[test]
     fn lanes_place_like_f64_forward_kinematics() {
-        let mut rng = crate::rng::SplitMix64::new(3);
+        let mut worst = 0.0f64;
+        for seed in 0..60 {
+            worst = worst.max(one_chain(seed));
+        }
+        std::println!("largest error over delta: {worst:.2e}");
+    }
+
+    fn one_chain(seed: u64) -> f64 {
+        let mut worst = 0.0f64;
+        let mut rng = crate::rng::SplitMix64::new(seed);
         let mut b = ChainBuilder::<f64>::new();
         let mut prev = b.add_link("base", None).expect("link");
         for i in 0..6 {
             let l = b.add_link(alloc::format!("l{i}"), None).expect("link");
-            let kind = [JointKind::Revolute, JointKind::Prismatic, JointKind::Fixed][i % 3];
+            let kind = [JointKind::Revolute, JointKind::Prismatic, JointKind::Fixed]
+                [(i + seed as usize) % 3];
+            let turn =
+                crate::chain::model::turn(Vec3::from_array(rng.direction()), rng.range(-3.0, 3.0));
             b.add_joint(JointSpec {
                 name: alloc::format!("j{i}"),
                 kind,
                 parent: prev,
                 child: l,
-                origin: Pose::from_translation(Vec3::from_array(rng.vec3())),
+                origin: Pose {
+                    rotation: turn.rotation,
+                    translation: Vec3::from_array(rng.vec3()),
+                },
                 axis: rng.direction(),
                 limits: None,
             })
@@ -261,16 +280,30 @@ mod tests {
         }
         let mut poses = Vec::new();
         lanes.place(&chain.base, &turn, &slide, &mut poses);
+        let points: Vec<[f32; 3]> = (0..6)
+            .map(|_| rng.vec3().map(|x| (x * 0.25) as f32))
+            .collect();
         for l in 0..LANES {
             let exact = chain.try_forward_kinematics(&q[l]).expect("fk");
             for (k, p) in exact.iter().enumerate() {
-                for i in 0..3 {
-                    assert!((f64::from(poses[k].t[i][l]) - p.translation.to_array()[i]).abs() < 1e-5);
-                    for j in 0..3 {
-                        assert!((f64::from(poses[k].r[i][j][l]) - p.rotation[i][j]).abs() < 1e-5);
-                    }
+                let (delta, _) = crate::chain::lever::lane_delta(&chain, &q[l], &q[l], k, 0.5);
+                for c in &points {
+                    let lane = poses[k].place(*c);
+                    let want = p
+                        .transform_point(Vec3::from_array(c.map(f64::from)))
+                        .to_array();
+                    let err = (0..3)
+                        .map(|i| (f64::from(lane[i][l]) - want[i]).powi(2))
+                        .sum::<f64>()
+                        .sqrt();
+                    assert!(
+                        err <= delta,
+                        "link {k}: error {err:e} above delta {delta:e}"
+                    );
+                    worst = worst.max(err / delta);
                 }
             }
         }
+        worst
     }
 }

@@ -6,10 +6,10 @@ use alloc::string::String;
 use alloc::vec::Vec;
 
 use crate::chain::model::{distinct, ChainError};
+use crate::chain::proxy::Proxy;
 use crate::geometry::gjk::ConvexPolytope;
 use crate::geometry::hull_vertices::hull_vertex_indices;
 use crate::rounding::gamma;
-use crate::chain::proxy::Proxy;
 use crate::{BallTree, Float, Pose, TriMesh, Vec3};
 
 fn orthonormal_row(v: Vec3<f64>) -> [f64; 3] {
@@ -102,7 +102,11 @@ impl<T: Float> Obstacle<T> {
         };
         let world: Vec<[f64; 3]> = all
             .iter()
-            .map(|v| pose64.transform_point(Vec3::from_array(v.map(T::to_f64))).to_array())
+            .map(|v| {
+                pose64
+                    .transform_point(Vec3::from_array(v.map(T::to_f64)))
+                    .to_array()
+            })
             .collect();
         let axes = tree.whole.nodes[0]
             .obb

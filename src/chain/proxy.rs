@@ -97,7 +97,12 @@ fn lipschitz(u: &[[f32; 3]; 3]) -> f64 {
 impl Proxy {
     /// The box of rows `axes` (any unit-ish directions) holding `points`,
     /// each known within `err` (a placement's rounding), grown by `r`.
-    pub(crate) fn holding(points: &[[f64; 3]], axes: [[f64; 3]; 3], err: f64, r: f64) -> Option<Self> {
+    pub(crate) fn holding(
+        points: &[[f64; 3]],
+        axes: [[f64; 3]; 3],
+        err: f64,
+        r: f64,
+    ) -> Option<Self> {
         if points.is_empty() || points.iter().flatten().any(|x| !x.is_finite()) {
             return None;
         }
@@ -179,7 +184,9 @@ impl Proxy {
                 r: r32,
             },
             lambda: 1.0,
-            size: (len(back(a32)).max(len(back(b32))) + len(diff(back(a32), back(b32))) + f64::from(r32))
+            size: (len(back(a32)).max(len(back(b32)))
+                + len(diff(back(a32), back(b32)))
+                + f64::from(r32))
                 * (1.0 + SLACK),
             tilt: 0.0,
             offset: 0.0,
@@ -189,7 +196,13 @@ impl Proxy {
 
     /// The cylinder of `pose` (exact), axis its `y`, `|y| <= half`, radius
     /// `radius`, grown by `r`, placed within `err`.
-    pub(crate) fn cylinder(pose: &Pose<f64>, half: f64, radius: f64, r: f64, err: f64) -> Option<Self> {
+    pub(crate) fn cylinder(
+        pose: &Pose<f64>,
+        half: f64,
+        radius: f64,
+        r: f64,
+        err: f64,
+    ) -> Option<Self> {
         let q = pose.rotation;
         // Rows: the body axes in the world (columns of Q).
         let u = [0, 1, 2].map(|k| f32v([q[0][k], q[1][k], q[2][k]]));
@@ -201,7 +214,8 @@ impl Proxy {
         let mut f = 0.0f64;
         for i in 0..3 {
             for j in 0..3 {
-                let e = dot(back(u[i]), [q[0][j], q[1][j], q[2][j]]) - if i == j { 1.0 } else { 0.0 };
+                let e =
+                    dot(back(u[i]), [q[0][j], q[1][j], q[2][j]]) - if i == j { 1.0 } else { 0.0 };
                 f += e * e;
             }
         }
@@ -365,7 +379,11 @@ impl Proxy {
 /// bounds for cuboids and cones, each grown by the shape's radius; `None`
 /// for a shape whose core is placed in its own frame (a compound's part) or
 /// a hull (the rake then leaves it to the edge engine).
-pub(crate) fn convex_proxy<T: Float>(shape: &crate::Convex<'static, T>, pose: &Pose<T>, err: T) -> Option<Proxy> {
+pub(crate) fn convex_proxy<T: Float>(
+    shape: &crate::Convex<'static, T>,
+    pose: &Pose<T>,
+    err: T,
+) -> Option<Proxy> {
     use crate::shape::convex::Core;
     if shape.is_placed() {
         return None;
@@ -394,14 +412,25 @@ pub(crate) fn convex_proxy<T: Float>(shape: &crate::Convex<'static, T>, pose: &P
         Core::Point => Proxy::ball(t, rho, place_err(0.0)),
         Core::Segment { half_height } => {
             let h = half_height.to_f64();
-            Proxy::capsule(world([0.0, -h, 0.0]), world([0.0, h, 0.0]), rho, place_err(h))
+            Proxy::capsule(
+                world([0.0, -h, 0.0]),
+                world([0.0, h, 0.0]),
+                rho,
+                place_err(h),
+            )
         }
         Core::Cuboid { half } => box_of(half.map(T::to_f64)),
-        Core::Cylinder { half_height, radius } => {
+        Core::Cylinder {
+            half_height,
+            radius,
+        } => {
             let (h, r) = (half_height.to_f64(), radius.to_f64());
             Proxy::cylinder(&pose, h, r, rho, err)
         }
-        Core::Cone { half_height, radius } => {
+        Core::Cone {
+            half_height,
+            radius,
+        } => {
             let (h, r) = (half_height.to_f64(), radius.to_f64());
             box_of([r, h, r])
         }
@@ -426,7 +455,11 @@ mod tests {
                 rotation: rot,
                 translation: Vec3::from_array(rng.vec3().map(|x| x * 3.0)),
             };
-            let (a, b, c) = (rng.range(0.01, 0.5), rng.range(0.01, 0.5), rng.range(0.01, 0.5));
+            let (a, b, c) = (
+                rng.range(0.01, 0.5),
+                rng.range(0.01, 0.5),
+                rng.range(0.01, 0.5),
+            );
             let shape = match case % 4 {
                 0 => crate::Convex::try_cuboid([a, b, c]).expect("box"),
                 1 => crate::Convex::try_cylinder(a, b).expect("cyl"),
@@ -467,11 +500,64 @@ mod tests {
                     let phi = p.phi(&pts);
                     for v in phi {
                         // f32 points are within u|x| of the exact ones.
-                        assert!(f64::from(v) <= 1e-5, "case {case}: phi {v} at a point of the shape");
+                        assert!(
+                            f64::from(v) <= 1e-5,
+                            "case {case}: phi {v} at a point of the shape"
+                        );
                     }
                     lane = 0;
                 }
             }
         }
+    }
+
+    /// The holding test has power: a box proxy fitted to corners 2 % inside
+    /// the cuboid's (as if its half extents were rounded down) leaves
+    /// points of the cuboid's faces with `phi > 0`.
+    #[test]
+    fn a_box_fitted_short_leaves_face_points_out() {
+        let mut rng = crate::rng::SplitMix64::new(12);
+        let mut out = 0;
+        for _ in 0..50 {
+            let h = [0; 3].map(|_| rng.range(0.05, 0.5));
+            let pose = Pose {
+                rotation: crate::chain::model::turn(
+                    Vec3::from_array(rng.direction()),
+                    rng.range(-3.0, 3.0),
+                )
+                .rotation,
+                translation: Vec3::from_array(rng.vec3()),
+            };
+            let q = pose.rotation;
+            let axes = [0, 1, 2].map(|k| [q[0][k], q[1][k], q[2][k]]);
+            let corners: Vec<[f64; 3]> = (0..8)
+                .map(|i| {
+                    let y = [0, 1, 2].map(|k| {
+                        if i >> k & 1 == 1 {
+                            0.98 * h[k]
+                        } else {
+                            -0.98 * h[k]
+                        }
+                    });
+                    pose.transform_point(Vec3::from_array(y)).to_array()
+                })
+                .collect();
+            let p = Proxy::holding(&corners, axes, 0.0, 0.0).expect("proxy");
+            let mut x = [[0.0f32; LANES]; 3];
+            for l in 0..LANES {
+                let mut y = [0; 3].map(|k| rng.range(-1.0, 1.0) * h[k]);
+                let face = l % 3;
+                y[face] = if l % 2 == 0 { h[face] } else { -h[face] };
+                let w = pose.transform_point(Vec3::from_array(y)).to_array();
+                for k in 0..3 {
+                    x[k][l] = w[k] as f32;
+                }
+            }
+            out += usize::from(p.phi(&x).iter().any(|&v| v > 1e-4));
+        }
+        assert!(
+            out > 40,
+            "only {out} of 50 short boxes leave a face point out"
+        );
     }
 }

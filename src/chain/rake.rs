@@ -58,7 +58,11 @@ impl RakeModel {
         for l in 0..chain.links.len() {
             match chain.links[l].mesh.as_ref() {
                 Some(mesh) => {
-                    covers.push(LinkCover::fit(mesh.vertices(), mesh.triangles(), COVER_BALLS));
+                    covers.push(LinkCover::fit(
+                        mesh.vertices(),
+                        mesh.triangles(),
+                        COVER_BALLS,
+                    ));
                     levers.push(link_levers(chain, l, mesh.vertices()));
                 }
                 None => {
@@ -72,20 +76,40 @@ impl RakeModel {
             .flatten()
             .flat_map(|c| c.r.iter().copied())
             .fold((0.0f64, 0usize), |(s, n), r| (s + f64::from(r), n + 1));
-        let sweep = if count > 0 { SWEEP_FRACTION * sum / count as f64 } else { 0.0 };
+        let sweep = if count > 0 {
+            SWEEP_FRACTION * sum / count as f64
+        } else {
+            0.0
+        };
         if std::env::var_os("RAKE_DEBUG").is_some() {
             for (l, c) in covers.iter().enumerate() {
                 if let Some(c) = c {
                     let top: Vec<f32> = c.r.clone();
                     let max = top.iter().fold(0.0f32, |a, &b| a.max(b));
                     let mean = top.iter().sum::<f32>() / top.len() as f32;
-                    let verts = chain.links[l].mesh.as_ref().map(|m| m.vertices().to_vec()).unwrap_or_default();
+                    let verts = chain.links[l]
+                        .mesh
+                        .as_ref()
+                        .map(|m| m.vertices().to_vec())
+                        .unwrap_or_default();
                     let mut rng = crate::rng::SplitMix64::new(5);
                     let (mut ex_max, mut ex_sum) = (0.0f64, 0.0f64);
                     for _ in 0..400 {
                         let d = rng.direction();
-                        let cs = (0..c.len()).map(|t| { f64::from(c.cx[t]) * d[0] + f64::from(c.cy[t]) * d[1] + f64::from(c.cz[t]) * d[2] + f64::from(c.r[t]) }).fold(f64::MIN, f64::max);
-                        let ms = verts.iter().map(|v| v[0].to_f64() * d[0] + v[1].to_f64() * d[1] + v[2].to_f64() * d[2]).fold(f64::MIN, f64::max);
+                        let cs = (0..c.len())
+                            .map(|t| {
+                                f64::from(c.cx[t]) * d[0]
+                                    + f64::from(c.cy[t]) * d[1]
+                                    + f64::from(c.cz[t]) * d[2]
+                                    + f64::from(c.r[t])
+                            })
+                            .fold(f64::MIN, f64::max);
+                        let ms = verts
+                            .iter()
+                            .map(|v| {
+                                v[0].to_f64() * d[0] + v[1].to_f64() * d[1] + v[2].to_f64() * d[2]
+                            })
+                            .fold(f64::MIN, f64::max);
                         ex_max = ex_max.max(cs - ms);
                         ex_sum += cs - ms;
                     }
@@ -113,6 +137,9 @@ pub(super) struct Rake<'a, T: 'static> {
     /// The sweep a link may have over a sub-interval's half width: what
     /// picks `K`.
     pub(super) sweep: f64,
+    /// What the sweeps are multiplied by in the thresholds: 1, but for the
+    /// tests that show the sweep is needed (less than 1 must fail them).
+    pub(super) sweep_scale: f64,
 }
 
 /// A time the chain is placed at: the middle of sub-interval `index` of
@@ -218,7 +245,14 @@ impl<T: Float> Rake<'_, T> {
         let mut fastest = 0.0f64;
         for l in 0..n {
             if self.model.covers[l].is_some() {
-                sweep_rates(chain, l, &self.model.levers[l], q0, q1, &mut w.rate[l * stride..(l + 1) * stride]);
+                sweep_rates(
+                    chain,
+                    l,
+                    &self.model.levers[l],
+                    q0,
+                    q1,
+                    &mut w.rate[l * stride..(l + 1) * stride],
+                );
                 fastest = fastest.max(w.rate[l * stride]);
             }
         }
@@ -262,7 +296,11 @@ impl<T: Float> Rake<'_, T> {
         for chunk in 0..chunks {
             let first = (chunk as usize) * LANES;
             let live = (k as usize - first).min(LANES);
-            let valid: u8 = if live == LANES { u8::MAX } else { (1u8 << live) - 1 };
+            let valid: u8 = if live == LANES {
+                u8::MAX
+            } else {
+                (1u8 << live) - 1
+            };
             self.place_chunk(first, live, w);
             self.chunk_balls(w);
             for i in 0..initial.len() {
@@ -300,7 +338,10 @@ impl<T: Float> Rake<'_, T> {
             if any {
                 let margins = &w.margins[at..end];
                 w.fails[first..].sort_unstable_by_key(|f| {
-                    let m = margins.iter().find(|m| m.1 == f.2).map_or(f32::NAN, |m| m.2);
+                    let m = margins
+                        .iter()
+                        .find(|m| m.1 == f.2)
+                        .map_or(f32::NAN, |m| m.2);
                     order_key(m)
                 });
             }
@@ -332,7 +373,9 @@ impl<T: Float> Rake<'_, T> {
                 p.map(|p| (p.lambda, p.size, p.tilt * (2.0 * ra + p.offset), 0.0, 0.0))
             };
             let side = match it.target {
-                Target::Shape(s) | Target::Cloud(s, _) => proxy(self.shapes[s as usize].proxy.as_ref()),
+                Target::Shape(s) | Target::Cloud(s, _) => {
+                    proxy(self.shapes[s as usize].proxy.as_ref())
+                }
                 Target::Mesh(o, _) => proxy(self.obstacles[o as usize].proxy.as_ref()),
                 Target::Link(b, _) => {
                     let b = b as usize;
@@ -343,11 +386,15 @@ impl<T: Float> Rake<'_, T> {
             let (tau, sweep) = match side {
                 Some((lambda, size, sigma, db, sb)) => {
                     let big = ra + size;
-                    let t = (da + db + sa + sb + self.padding + sigma)
+                    let t = (da + db + (sa + sb) * self.sweep_scale + self.padding + sigma)
                         * (1.0 + 1.0 / 1_099_511_627_776.0)
                         + (KAPPA + 2.0) * U32 * big
                         + 3.0 * (lambda - 1.0) * big;
-                    let tau = if t.is_finite() { up32(t) } else { f32::INFINITY };
+                    let tau = if t.is_finite() {
+                        up32(t)
+                    } else {
+                        f32::INFINITY
+                    };
                     (tau, (sa + sb) as f32)
                 }
                 None => (f32::INFINITY, 0.0),
@@ -375,7 +422,11 @@ impl<T: Float> Rake<'_, T> {
             let (a, b) = (q0[d].to_f64(), q1[d].to_f64());
             let dq = b - a;
             let (mut s, mut c) = (a + 0.5 * step * dq).sin_cos();
-            let (sd, cd) = if kk > 1 { (step * dq).sin_cos() } else { (0.0, 1.0) };
+            let (sd, cd) = if kk > 1 {
+                (step * dq).sin_cos()
+            } else {
+                (0.0, 1.0)
+            };
             for i in 0..kk {
                 let m = (i as f64 + 0.5) * step;
                 w.coords[i * dofs + d] = [c, s, a + m * dq];
@@ -526,14 +577,15 @@ impl<T: Float> Rake<'_, T> {
     /// cover against `b`'s enclosing ball, then against each of `b`'s balls.
     fn test_link(&self, a: usize, b: usize, tau: f32, lanes: u8, w: &mut RakeWork) -> (u8, Lane) {
         let mut worst = [f32::INFINITY; LANES];
-        let (Some(ca), Some(cb)) = (
-            self.model.covers[a].as_ref(),
-            self.model.covers[b].as_ref(),
-        ) else {
+        let (Some(ca), Some(cb)) = (self.model.covers[a].as_ref(), self.model.covers[b].as_ref())
+        else {
             return (lanes, [f32::NEG_INFINITY; LANES]);
         };
         w.tests += 1;
-        let outer = not_above(&ball_gap(&w.enclosing[a], ca.radius, &w.enclosing[b], cb.radius), tau) & lanes;
+        let outer = not_above(
+            &ball_gap(&w.enclosing[a], ca.radius, &w.enclosing[b], cb.radius),
+            tau,
+        ) & lanes;
         if outer == 0 {
             return (0, worst);
         }
@@ -578,3 +630,6 @@ fn ball_gap(x: &[Lane; 3], rx: f32, y: &[Lane; 3], ry: f32) -> Lane {
     }
     out
 }
+
+#[cfg(test)]
+mod tests;

@@ -686,8 +686,16 @@ impl<T: Float> EdgeChecker<'_, T> {
                 obstacles: &scene.obstacles,
                 padding: scene.params.padding.to_f64(),
                 sweep: scene.rake.sweep,
+                sweep_scale: 1.0,
             };
-            if rake.run(q0, q1, &self.initial, &self.slots, !first_contact, &mut self.rake) {
+            if rake.run(
+                q0,
+                q1,
+                &self.initial,
+                &self.slots,
+                !first_contact,
+                &mut self.rake,
+            ) {
                 let r = &self.rake;
                 if std::env::var_os("RAKE_FAILS").is_some() {
                     for f in &r.fails {
@@ -705,6 +713,38 @@ impl<T: Float> EdgeChecker<'_, T> {
             }
         }
         Ok(edge.run(&self.initial, &self.slots, &mut self.work))
+    }
+
+    /// The rake alone on `q0 -> q1` with its sweeps scaled by `sweep_scale`
+    /// (1 as the queries run it) and sub-intervals picked for `sweep` times
+    /// the scene's sweep: the (sub-interval, item) pairs it does not clear,
+    /// the number of sub-intervals, and the items (for tests).
+    #[cfg(test)]
+    pub(super) fn rake_only(
+        &mut self,
+        q0: &[T],
+        q1: &[T],
+        sweep_scale: f64,
+        sweep: f64,
+    ) -> Option<(Vec<(u32, u32, u32)>, u32, Vec<Item>)> {
+        let scene = self.scene;
+        let rake = Rake {
+            chain: &scene.chain,
+            model: &scene.rake,
+            shapes: &scene.shapes,
+            obstacles: &scene.obstacles,
+            padding: scene.params.padding.to_f64(),
+            sweep: scene.rake.sweep * sweep,
+            sweep_scale,
+        };
+        rake.run(q0, q1, &self.initial, &self.slots, true, &mut self.rake)
+            .then(|| {
+                (
+                    self.rake.fails.clone(),
+                    self.rake.times_count,
+                    self.initial.clone(),
+                )
+            })
     }
 
     /// [`ChainScene::collides_at`] with this checker's buffers: the pair

@@ -10,9 +10,9 @@ use alloc::string::String;
 use alloc::vec::Vec;
 
 use crate::bvh::{VertexTree, NO_CHILD};
-use crate::chain::proxy::{convex_proxy, Proxy};
 use crate::ca::{certified_gap_to, PlacedCore};
 use crate::chain::model::ChainError;
+use crate::chain::proxy::{convex_proxy, Proxy};
 use crate::geometry::closest::point_triangle_vec;
 use crate::rounding::{gamma, gap_down, sum_up};
 use crate::{gjk_distance, Convex, ConvexPolytope, Float, GjkParams, Pose, Vec3, VertexSet};
@@ -165,7 +165,10 @@ impl<T: Float> ShapeObstacle<T> {
             .iter()
             .map(|&i| {
                 let b = &nodes[i].ball;
-                (b.centre().map(T::to_f64), b.radius().to_f64() + radius.to_f64())
+                (
+                    b.centre().map(T::to_f64),
+                    b.radius().to_f64() + radius.to_f64(),
+                )
             })
             .collect();
         let proxy = Proxy::balls(&balls, delta.to_f64());
