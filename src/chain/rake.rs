@@ -498,6 +498,11 @@ impl<T: Float> Rake<'_, T> {
     /// clears); for a pair of links the two chunk balls' gap.
     fn far(&self, it: &Item, tau: f32, w: &RakeWork) -> bool {
         let a = it.link as usize;
+        // A link without a cover has no chunk ball.
+        let covered = |l: usize| self.model.covers[l].is_some();
+        if !covered(a) || matches!(it.target, Target::Link(b, _) if !covered(b as usize)) {
+            return false;
+        }
         let (ca, ra) = w.chunk_ball[a];
         let proxy = match it.target {
             Target::Shape(s) | Target::Cloud(s, _) => self.shapes[s as usize].proxy.as_ref(),
