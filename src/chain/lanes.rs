@@ -7,6 +7,10 @@
 //! and sines come from the caller (computed in `f64` and rounded), so that no
 //! lane calls a transcendental function.
 
+// Lane loops index fixed-size arrays by lane: the form the compiler turns
+// into SIMD. A gap compared as `!(g > tau)` fails a NaN gap, as it must.
+#![allow(clippy::needless_range_loop, clippy::neg_cmp_op_on_partial_ord)]
+
 use alloc::vec::Vec;
 
 use crate::chain::model::{Chain, JointKind};

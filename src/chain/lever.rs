@@ -205,6 +205,7 @@ pub(crate) fn lane_delta<T: Float>(
 }
 
 #[cfg(test)]
+#[allow(clippy::needless_range_loop)]
 mod tests {
     use super::*;
     use crate::chain::model::JointFrame;

@@ -7,6 +7,10 @@
 //! nodes); each built once when the obstacle is made, certified to hold it
 //! with the rounding of its numbers to `f32`.
 
+// Lane loops index fixed-size arrays by lane: the form the compiler turns
+// into SIMD. A gap compared as `!(g > tau)` fails a NaN gap, as it must.
+#![allow(clippy::needless_range_loop, clippy::neg_cmp_op_on_partial_ord)]
+
 use alloc::vec::Vec;
 
 use crate::chain::cover::up32;

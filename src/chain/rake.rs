@@ -11,6 +11,10 @@
 //! halves it, descends the trees or measures the hulls and triangles
 //! (Lemmas 13.5 to 13.8): so the cost follows the clearance, not the edge.
 
+// Lane loops index fixed-size arrays by lane: the form the compiler turns
+// into SIMD. A gap compared as `!(g > tau)` fails a NaN gap, as it must.
+#![allow(clippy::needless_range_loop, clippy::neg_cmp_op_on_partial_ord)]
+
 use alloc::vec::Vec;
 
 use crate::chain::cover::{up32, LinkCover};
@@ -52,7 +56,6 @@ pub(crate) const COVER_BALLS: usize = 24;
 impl RakeModel {
     /// The rake's data for `chain`.
     pub(super) fn new<T: Float>(chain: &Chain<T>) -> Self {
-        let started = std::time::Instant::now();
         let mut covers = Vec::with_capacity(chain.links.len());
         let mut levers = Vec::with_capacity(chain.links.len());
         for l in 0..chain.links.len() {
@@ -81,43 +84,6 @@ impl RakeModel {
         } else {
             0.0
         };
-        if std::env::var_os("RAKE_DEBUG").is_some() {
-            for (l, c) in covers.iter().enumerate() {
-                if let Some(c) = c {
-                    let top: Vec<f32> = c.r.clone();
-                    let max = top.iter().fold(0.0f32, |a, &b| a.max(b));
-                    let mean = top.iter().sum::<f32>() / top.len() as f32;
-                    let verts = chain.links[l]
-                        .mesh
-                        .as_ref()
-                        .map(|m| m.vertices().to_vec())
-                        .unwrap_or_default();
-                    let mut rng = crate::rng::SplitMix64::new(5);
-                    let (mut ex_max, mut ex_sum) = (0.0f64, 0.0f64);
-                    for _ in 0..400 {
-                        let d = rng.direction();
-                        let cs = (0..c.len())
-                            .map(|t| {
-                                f64::from(c.cx[t]) * d[0]
-                                    + f64::from(c.cy[t]) * d[1]
-                                    + f64::from(c.cz[t]) * d[2]
-                                    + f64::from(c.r[t])
-                            })
-                            .fold(f64::MIN, f64::max);
-                        let ms = verts
-                            .iter()
-                            .map(|v| {
-                                v[0].to_f64() * d[0] + v[1].to_f64() * d[1] + v[2].to_f64() * d[2]
-                            })
-                            .fold(f64::MIN, f64::max);
-                        ex_max = ex_max.max(cs - ms);
-                        ex_sum += cs - ms;
-                    }
-                    std::eprintln!("link {l} {}: {} balls, radius max {max:.4} mean {mean:.4}, enclosing {:.4}, support excess max {ex_max:.4} mean {:.4}", chain.links[l].name, c.len(), c.radius, ex_sum / 400.0);
-                }
-            }
-            std::eprintln!("sweep target {sweep:.4}, built in {:?}", started.elapsed());
-        }
         Self {
             covers,
             levers,

@@ -697,12 +697,6 @@ impl<T: Float> EdgeChecker<'_, T> {
                 &mut self.rake,
             ) {
                 let r = &self.rake;
-                if std::env::var_os("RAKE_FAILS").is_some() {
-                    for f in &r.fails {
-                        let it = self.initial[f.2 as usize];
-                        std::eprintln!("FAIL {} {} {:?}", f.0, it.link, it.target);
-                    }
-                }
                 return Ok(edge.run_spans(
                     &self.initial,
                     &r.fails,
@@ -720,6 +714,7 @@ impl<T: Float> EdgeChecker<'_, T> {
     /// the scene's sweep: the (sub-interval, item) pairs it does not clear,
     /// the number of sub-intervals, and the items (for tests).
     #[cfg(test)]
+    #[allow(clippy::type_complexity)]
     pub(super) fn rake_only(
         &mut self,
         q0: &[T],
