@@ -22,7 +22,10 @@ use crate::Float;
 const MAX_SPLIT: usize = 48;
 
 /// The most pieces a link is cut into (a coarser piece size above it).
-const MAX_PIECES: usize = 6_000;
+const MAX_PIECES: usize = 4_000;
+
+/// The most candidate centres a cover's fit weighs.
+const MAX_CANDIDATES: usize = 320;
 
 /// Balls in the link frame whose union holds every triangle of the link.
 #[derive(Clone, Debug, Default)]
@@ -322,6 +325,11 @@ fn deep_cover(
                 }
             }
         }
+    }
+    // At most `MAX_CANDIDATES`, spread over the grid (the fit's cost).
+    if cands.len() > MAX_CANDIDATES {
+        let every = cands.len().div_ceil(MAX_CANDIDATES);
+        cands = cands.into_iter().step_by(every).collect();
     }
     let n = pieces.corners.len();
     // Per candidate, the pieces by the `eps` it needs to take them (the
