@@ -71,7 +71,8 @@ impl<T> EdgeOutcome<T> {
 #[non_exhaustive]
 pub struct EdgeStats {
     /// Items tested (a ball or triangle against what it is checked
-    /// against): the work the budget counts.
+    /// against), the rake's lane tests among them
+    /// ([`lane_tests`](Self::lane_tests)): the work the budget counts.
     pub tests: usize,
     /// Leaf pairs among them (a triangle against a shape, a triangle or a
     /// cloud's points), measured at one time: by slab gaps first, and by
@@ -238,6 +239,11 @@ impl<T: Float> Edge<'_, T> {
         w.stats.raked_intervals = times as usize;
         w.stats.lane_tests = lane_tests;
         w.stats.handed = fails.len();
+        // The rake's lane tests count against the budget as items do.
+        w.stats.tests = lane_tests;
+        if lane_tests > self.budget {
+            return self.report(Err((T::ZERO, Stop::Undecided)), w);
+        }
         let scale = T::ONE / T::from_u32(times);
         let mut level = core::mem::take(&mut w.level);
         level.clear();
