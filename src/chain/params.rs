@@ -36,7 +36,10 @@ pub struct ChainParams<T> {
     /// (`proofs/13-chains.md`, Lemmas 13.9 to 13.13): the chain placed at up
     /// to 32 times at once in `f32` lanes, every checked pair's link covers
     /// tested there, and only what that does not clear handed to the finer
-    /// engine. On by default; the answers are certified either way.
+    /// engine. On by default; the answers are certified either way. It runs
+    /// when [`edge_budget`](Self::edge_budget) is at least 4,096 (its lane
+    /// tests count against the budget); a smaller budget gets the engine
+    /// alone, item by item.
     pub rake: bool,
 }
 

@@ -27,6 +27,11 @@ use crate::chain::proxy::Proxy;
 use crate::chain::shapes::ShapeObstacle;
 use crate::Float;
 
+/// The least edge budget the rake runs under: a smaller budget asks for a
+/// bounded bail-out, which the edge engine alone gives item by item (the
+/// rake's pass is a few hundred lane tests; they count against the budget).
+pub(crate) const RAKE_MIN_BUDGET: usize = 4096;
+
 /// The most sub-intervals an edge is raked into.
 pub(crate) const MAX_TIMES: u32 = 32;
 

@@ -16,7 +16,7 @@ use crate::chain::gap::min_gap;
 use crate::chain::model::{Chain, ChainError};
 use crate::chain::obstacle::Obstacle;
 use crate::chain::params::ChainParams;
-use crate::chain::rake::{Rake, RakeModel, RakeWork};
+use crate::chain::rake::{Rake, RakeModel, RakeWork, RAKE_MIN_BUDGET};
 use crate::chain::report::{
     ChainContact, ChainPair, ChainStats, PathReport, SegmentOutcome, SegmentReport,
 };
@@ -678,7 +678,7 @@ impl<T: Float> EdgeChecker<'_, T> {
             budget: scene.params.edge_budget,
             first_contact,
         };
-        if scene.params.rake && q0 != q1 {
+        if scene.params.rake && q0 != q1 && scene.params.edge_budget >= RAKE_MIN_BUDGET {
             let rake = Rake {
                 chain: &scene.chain,
                 model: &scene.rake,
