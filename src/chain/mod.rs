@@ -85,6 +85,7 @@ mod advance;
 mod bound;
 mod broad;
 mod cover;
+mod dispatch;
 mod edge;
 mod gap;
 mod lanes;

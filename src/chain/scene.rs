@@ -7,12 +7,13 @@ use alloc::vec;
 use alloc::vec::Vec;
 use core::ops::ControlFlow;
 
-use crate::bvh::Hierarchy;
 use crate::chain::advance::{advance_pair, PairEnd};
-use crate::chain::bound::LinkMotion;
 use crate::chain::broad::broad_phase;
-use crate::chain::edge::{Edge, EdgeReport, EdgeWork, Item, Target};
-use crate::chain::gap::min_gap;
+use crate::chain::dispatch::{
+    first_contact_engine, first_link, placed_gap, shape_min_gap, target_of, FirstContact,
+    PlacedPair,
+};
+use crate::chain::edge::{Edge, EdgeOutcome, EdgeReport, EdgeWork, Item, Target};
 use crate::chain::model::{Chain, ChainError};
 use crate::chain::obstacle::Obstacle;
 use crate::chain::params::ChainParams;
@@ -24,7 +25,7 @@ use crate::chain::segment::{Segment, Work};
 use crate::chain::shapes::ShapeObstacle;
 use crate::geometry::gjk::ConvexPolytope;
 use crate::rounding::gamma;
-use crate::{Float, Pose};
+use crate::{Float, Point3, Pose, Vec3};
 
 /// A chain in still surroundings: what a planner's motion validator asks
 /// about. Pairs of adjacent links (joined by one joint, or rigidly through
@@ -126,12 +127,14 @@ impl<T: Float> ChainScene<T> {
     }
 
     /// Adds a shape obstacle (a primitive, a half-space or a point cloud)
-    /// and returns its index. Shapes are checked by the edge queries
+    /// and returns its index. Every query takes it, as it takes meshes:
+    /// the first-contact queries ([`check_segment`](Self::check_segment),
+    /// [`check_path`](Self::check_path)) through the edge engine depth first
+    /// in time, [`clearance`](Self::clearance) and
+    /// [`collides_at`](Self::collides_at) by the rigid engine's certified
+    /// gaps at the configuration, the edge queries
     /// ([`check_edge`](Self::check_edge), [`edge_is_free`](Self::edge_is_free),
-    /// [`edges_are_free`](Self::edges_are_free)); the first-contact queries
-    /// ([`check_segment`](Self::check_segment), [`clearance`](Self::clearance),
-    /// [`collides_at`](Self::collides_at)) take mesh obstacles only and
-    /// refuse a scene with shapes ([`ChainError::InvalidParameter`]).
+    /// [`edges_are_free`](Self::edges_are_free)) as before.
     pub fn add_shape(&mut self, shape: ShapeObstacle<T>) -> usize {
         self.shapes.push(shape);
         self.shapes.len() - 1
@@ -195,13 +198,18 @@ impl<T: Float> ChainScene<T> {
     }
 
     /// The pairs a query considers (with geometry), and whether each is
-    /// checked.
+    /// checked: the one list every query takes its pairs from (each served
+    /// by its kinds' engine, `dispatch.rs`), per link its shapes, its mesh
+    /// obstacles, then the links after it.
     fn pairs(&self) -> Vec<(ChainPair, bool)> {
         let mut out = Vec::new();
         let n = self.chain.links.len();
         for l in 0..n {
             if self.chain.links[l].tree.is_none() {
                 continue;
+            }
+            for s in 0..self.shapes.len() {
+                out.push((ChainPair::Shape { link: l, shape: s }, true));
             }
             for o in 0..self.obstacles.len() {
                 out.push((
@@ -232,22 +240,17 @@ impl<T: Float> ChainScene<T> {
     /// [`ChainError::BeyondLimits`] for an end outside the joints' limits
     /// (unless [`ChainParams::within_limits`] is off).
     pub fn check_segment(&self, q0: &[T], q1: &[T]) -> Result<SegmentReport<T>, ChainError> {
-        self.meshes_only()?;
         self.check_end(q0)?;
         self.check_end(q1)?;
         let mut work = Work::default();
-        Ok(self.segment(q0, q1, &mut work))
+        let mut checker = self.shape_checker();
+        Ok(self.segment(q0, q1, &mut work, checker.as_mut()))
     }
 
-    /// The first-contact queries take mesh obstacles only.
-    fn meshes_only(&self) -> Result<(), ChainError> {
-        if self.shapes.is_empty() {
-            Ok(())
-        } else {
-            Err(ChainError::InvalidParameter(
-                "a scene with shape obstacles is checked by check_edge and edge_is_free",
-            ))
-        }
+    /// An edge checker for the first-contact queries' shape pairs (`None`
+    /// without shape obstacles).
+    fn shape_checker(&self) -> Option<EdgeChecker<'_, T>> {
+        (!self.shapes.is_empty()).then(|| self.edge_checker())
     }
 
     /// Whether the joint-space edge `q0 -> q1` is certified free of every
@@ -318,7 +321,6 @@ impl<T: Float> ChainScene<T> {
     #[must_use]
     pub fn edge_checker(&self) -> EdgeChecker<'_, T> {
         let mut initial = Vec::new();
-        let n = self.chain.links.len();
         // A motion slot per link (all its joints) and per link of a pair
         // with the pair's common joints skipped.
         let mut slots: Vec<(usize, usize)> = Vec::new();
@@ -332,38 +334,30 @@ impl<T: Float> ChainScene<T> {
                 });
             u16::try_from(at).unwrap_or(u16::MAX)
         };
-        for l in 0..n {
-            if self.chain.links[l].tree.is_none() {
+        // The checked pairs, each with its kinds' root target (`dispatch.rs`);
+        // a link's own slot is made before its pairs'.
+        for (pair, checked) in self.pairs() {
+            let link = first_link(pair);
+            let own = slot(link, 0);
+            if !checked {
                 continue;
             }
-            let own = slot(l, 0);
-            let item = |target| Item {
-                link: l as u32,
+            let target = target_of(pair, &self.shapes);
+            let (slot_a, slot_b) = match pair {
+                ChainPair::SelfCollision { a, b } => {
+                    let skip = self.chain.common_prefix(a, b);
+                    let sa = slot(a, skip);
+                    (sa, slot(b, skip))
+                }
+                _ => (own, own),
+            };
+            initial.push(Item {
+                link: link as u32,
                 node: 0,
                 target,
-                slot: own,
-                slot_b: own,
-            };
-            for (s, shape) in self.shapes.iter().enumerate() {
-                initial.push(item(if shape.points().is_some() {
-                    Target::Cloud(s as u32, 0)
-                } else {
-                    Target::Shape(s as u32)
-                }));
-            }
-            for o in 0..self.obstacles.len() {
-                initial.push(item(Target::Mesh(o as u32, 0)));
-            }
-            for m in l + 1..n {
-                if self.checks_pair(l, m) {
-                    let skip = self.chain.common_prefix(l, m);
-                    initial.push(Item {
-                        slot: slot(l, skip),
-                        slot_b: slot(m, skip),
-                        ..item(Target::Link(m as u32, 0))
-                    });
-                }
-            }
+                slot: slot_a,
+                slot_b,
+            });
         }
         // Each link's hull (its distinct vertices), validated when the chain
         // was built: `None` for a link without geometry or with a vertex GJK
@@ -414,7 +408,6 @@ impl<T: Float> ChainScene<T> {
     /// [`ChainError::InvalidParameter`] for fewer than two waypoints, and as
     /// [`check_segment`](Self::check_segment).
     pub fn check_path<Q: AsRef<[T]>>(&self, waypoints: &[Q]) -> Result<PathReport<T>, ChainError> {
-        self.meshes_only()?;
         if waypoints.len() < 2 {
             return Err(ChainError::InvalidParameter("a path needs two waypoints"));
         }
@@ -423,8 +416,9 @@ impl<T: Float> ChainScene<T> {
         }
         let mut work = Work::default();
         let mut stats = ChainStats::default();
+        let mut checker = self.shape_checker();
         for (i, w) in waypoints.windows(2).enumerate() {
-            let report = self.segment(w[0].as_ref(), w[1].as_ref(), &mut work);
+            let report = self.segment(w[0].as_ref(), w[1].as_ref(), &mut work, checker.as_mut());
             stats += report.stats;
             if report.outcome != SegmentOutcome::Separated || i + 2 == waypoints.len() {
                 return Ok(PathReport {
@@ -440,26 +434,17 @@ impl<T: Float> ChainScene<T> {
     /// A certified lower bound of the smallest distance over the checked
     /// pairs at configuration `q` (`<= 0` for touching or overlapping
     /// surfaces, up to rounding), and the pair that attains it (`None` when
-    /// nothing is checked).
+    /// nothing is checked): links against mesh obstacles, shape obstacles
+    /// (primitives, half-spaces, point clouds) and each other.
     ///
     /// # Errors
     /// [`ChainError::WrongDof`] and [`ChainError::NonFiniteCoordinate`].
     pub fn clearance(&self, q: &[T]) -> Result<(T, Option<ChainPair>), ChainError> {
         let mut best = (T::INFINITY, None);
+        let shapes = &self.shapes;
         self.each_checked_pair_at(q, |p, stack| {
             let mut stats = ChainStats::default();
-            let d = min_gap(
-                p.ta,
-                p.tb,
-                p.a,
-                p.b,
-                best.0,
-                T::ZERO,
-                T::ZERO,
-                stack,
-                &mut stats,
-            )
-            .gap;
+            let d = placed_gap(&p, shapes, best.0, T::ZERO, stack, &mut stats).gap;
             if d < best.0 {
                 best = (d, Some(p.pair));
             }
@@ -522,20 +507,11 @@ impl<T: Float> ChainScene<T> {
     ) -> Result<Vec<ChainPair>, ChainError> {
         let mut out = Vec::new();
         let mut stats = ChainStats::default();
+        let shapes = &self.shapes;
         self.each_checked_pair_at(q, |p, stack| {
             // Node pairs whose certified gap exceeds the distance are not refined.
             let cap = distance + T::ETA_NORMAL + T::TWO * (p.a.delta + p.b.delta);
-            let near = min_gap(
-                p.ta,
-                p.tb,
-                p.a,
-                p.b,
-                cap,
-                T::ZERO,
-                distance,
-                stack,
-                &mut stats,
-            );
+            let near = placed_gap(&p, shapes, cap, distance, stack, &mut stats);
             if near.closest.is_some_and(|(d, _, _)| d <= distance) {
                 out.push(p.pair);
                 if first {
@@ -555,7 +531,6 @@ impl<T: Float> ChainScene<T> {
         q: &[T],
         mut f: impl FnMut(PlacedPair<'_, T>, &mut Vec<(u32, u32)>) -> ControlFlow<()>,
     ) -> Result<(), ChainError> {
-        self.meshes_only()?;
         self.chain.check_q(q)?;
         let segment = self.segment_view(q, q);
         let mut work = Work::default();
@@ -563,17 +538,24 @@ impl<T: Float> ChainScene<T> {
         segment.place(&mut work, T::ZERO);
         work.rate = vec![T::ZERO; self.chain.dofs];
         for (pair, checked) in self.pairs() {
+            let Some(tree) = self.chain.links[first_link(pair)].tree.as_ref() else {
+                continue;
+            };
             if !checked {
                 continue;
             }
-            let Some((ta, tb)) = segment.trees(pair) else {
-                continue;
-            };
+            let tb = segment.trees(pair).map(|t| t.1);
             segment.fill_motions(&mut work, pair, T::ZERO);
             let (Some(a), Some(b)) = (&work.a, &work.b) else {
                 continue;
             };
-            let placed = PlacedPair { pair, ta, tb, a, b };
+            let placed = PlacedPair {
+                pair,
+                ta: &tree.whole,
+                tb,
+                a,
+                b,
+            };
             if f(placed, &mut work.stack).is_break() {
                 break;
             }
@@ -592,8 +574,38 @@ impl<T: Float> ChainScene<T> {
         }
     }
 
-    fn segment(&self, q0: &[T], q1: &[T], work: &mut Work<T>) -> SegmentReport<T> {
+    /// The first contact on the segment: the pairs of meshes and links by
+    /// conservative advancement, the shape pairs by `checker`'s edge engine
+    /// (`dispatch.rs`; `checker` is `None` without shapes).
+    fn segment(
+        &self,
+        q0: &[T],
+        q1: &[T],
+        work: &mut Work<T>,
+        checker: Option<&mut EdgeChecker<'_, T>>,
+    ) -> SegmentReport<T> {
         let mut stats = ChainStats::default();
+        let mut best: Option<ChainContact<T>> = None;
+        let mut limit: Option<(T, ChainPair)> = None;
+        let (advanced, edged): (Vec<_>, Vec<_>) = self
+            .pairs()
+            .into_iter()
+            .partition(|&(p, _)| first_contact_engine(p) == FirstContact::Advance);
+        if let (Some(checker), Some(&(first, _))) = (checker, edged.first()) {
+            let r = checker.shape_first_contact(q0, q1);
+            stats.pairs += edged.len();
+            stats.node_pairs += r.stats.tests;
+            stats.leaf_pairs += r.stats.leaf_tests;
+            match r.outcome {
+                EdgeOutcome::Free => {}
+                EdgeOutcome::Contact {
+                    free_until,
+                    at,
+                    pair,
+                } => best = Some(self.shape_contact(q0, q1, free_until, at, pair, work)),
+                EdgeOutcome::Undecided { free_until } => limit = Some((free_until, first)),
+            }
+        }
         work.errors.compute(&self.chain, q0, q1);
         work.rate.clear();
         work.rate.extend(
@@ -601,16 +613,15 @@ impl<T: Float> ChainScene<T> {
                 .zip(q1)
                 .map(|(a, b)| (*b - *a).abs() * (T::ONE + gamma::<T>(2))),
         );
-        let pairs = self.pairs();
         let segment = self.segment_view(q0, q1);
-        let mut live = broad_phase(&segment, &pairs, work, &mut stats);
+        let mut live = broad_phase(&segment, &advanced, work, &mut stats);
         // Pairs whose swept volumes meet earliest first: an early contact
         // found first ends every later pair's advance there.
         live.sort_by_key(|&(_, mask)| mask.trailing_zeros());
-        let mut best: Option<ChainContact<T>> = None;
-        let mut limit: Option<(T, ChainPair)> = None;
         for (pair, mask) in live {
-            let until = best.map_or(T::ONE, |c| c.time);
+            let until = best
+                .map_or(T::ONE, |c| c.time)
+                .min_nan(limit.map_or(T::ONE, |l| l.0));
             match advance_pair(&segment, pair, mask, until, work, &mut stats) {
                 PairEnd::Contact(c) => best = Some(c),
                 PairEnd::Undecided(t) => {
@@ -630,6 +641,50 @@ impl<T: Float> ChainScene<T> {
             (None, None) => SegmentOutcome::Separated,
         };
         SegmentReport { outcome, stats }
+    }
+
+    /// The contact the edge engine found for shape pair `pair` on the
+    /// segment: certified free before `free_until` (its time), the pair's
+    /// computed distance and witnesses measured at `at`, where the engine
+    /// found it within the contact distance.
+    fn shape_contact(
+        &self,
+        q0: &[T],
+        q1: &[T],
+        free_until: T,
+        at: T,
+        pair: ChainPair,
+        work: &mut Work<T>,
+    ) -> ChainContact<T> {
+        let segment = self.segment_view(q0, q1);
+        work.errors.compute(&self.chain, q0, q1);
+        work.rate.clear();
+        work.rate.resize(self.chain.dofs, T::ZERO);
+        segment.place(work, at);
+        segment.fill_motions(work, pair, T::ZERO);
+        let near = match (pair, &self.chain.links[first_link(pair)].tree, &work.a) {
+            (ChainPair::Shape { shape, .. }, Some(tree), Some(a)) => {
+                shape_min_gap(
+                    &tree.whole,
+                    a,
+                    &self.shapes[shape],
+                    T::INFINITY,
+                    T::INFINITY,
+                    &mut work.stack,
+                    &mut ChainStats::default(),
+                )
+                .closest
+            }
+            _ => None,
+        };
+        let (distance, on_a, on_b) = near.unwrap_or((T::ZERO, Vec3::ZERO, Vec3::ZERO));
+        ChainContact {
+            time: free_until,
+            pair,
+            distance,
+            on_a: Point3::from_vec3(on_a),
+            on_b: Point3::from_vec3(on_b),
+        }
     }
 }
 
@@ -656,6 +711,73 @@ impl<T: Float> EdgeChecker<'_, T> {
     /// As [`ChainScene::check_segment`].
     pub fn check(&mut self, q0: &[T], q1: &[T]) -> Result<EdgeReport<T>, ChainError> {
         self.run(q0, q1, true)
+    }
+
+    /// The first contact of the shape pairs alone, from their root items:
+    /// the edge engine's part of [`ChainScene::check_segment`]
+    /// (`dispatch.rs`), contact at the contact distance, no padding.
+    fn shape_first_contact(&mut self, q0: &[T], q1: &[T]) -> EdgeReport<T> {
+        let scene = self.scene;
+        let items: Vec<Item> = self
+            .initial
+            .iter()
+            .copied()
+            .filter(|it| matches!(it.target, Target::Shape(_) | Target::Cloud(..)))
+            .collect();
+        let edge = Edge {
+            segment: scene.segment_view(q0, q1),
+            shapes: &scene.shapes,
+            hulls: &self.hulls,
+            obstacle_hulls: &self.obstacle_hulls,
+            touch: scene.params.contact_distance,
+            padding: T::ZERO,
+            budget: scene.params.edge_budget,
+            first_contact: true,
+        };
+        let mut report = edge.run(&items, &self.slots, &mut self.work);
+        // The engine declares a contact at an interval's middle `at`, free
+        // only before the interval's start: narrow `[free_until, at]` (a
+        // dyadic interval) by running it alone until it is free (the
+        // contact is then at `at`) or no wider than rounding lets it split.
+        let mut stats = report.stats;
+        let floor =
+            (T::UNIT_ROUNDOFF * T::from_u32(256)).max_nan(T::from_f64(1.0 / (1u64 << 30) as f64));
+        let mut spans: Vec<(u32, u32, u32)> = Vec::new();
+        while let EdgeOutcome::Contact {
+            free_until: lo,
+            at: hi,
+            pair,
+        } = report.outcome
+        {
+            let width = hi - lo;
+            if !(width > floor) {
+                break;
+            }
+            let times = (T::ONE / width).to_f64().round();
+            let start = (lo.to_f64() * times).round();
+            let (times, start) = (times as u32, start as u32);
+            let scale = T::ONE / T::from_u32(times);
+            if T::from_u32(start) * scale != lo || T::from_u32(start + 1) * scale != hi {
+                break;
+            }
+            spans.clear();
+            spans.extend((0..items.len() as u32).map(|i| (0, start, i)));
+            let next = edge.run_spans(&items, &spans, (times, 0), &self.slots, &mut self.work);
+            stats += next.stats;
+            report = match next.outcome {
+                EdgeOutcome::Free => EdgeReport {
+                    outcome: EdgeOutcome::Contact {
+                        free_until: hi,
+                        at: hi,
+                        pair,
+                    },
+                    stats,
+                },
+                _ => next,
+            };
+        }
+        report.stats = stats;
+        report
     }
 
     /// The query: the first contact when `first_contact`, else any.
@@ -791,14 +913,4 @@ impl<T: Float> EdgeChecker<'_, T> {
     pub fn check_any(&mut self, q0: &[T], q1: &[T]) -> Result<EdgeReport<T>, ChainError> {
         self.run(q0, q1, false)
     }
-}
-
-/// A checked pair with the chain still at one configuration: its two
-/// hierarchies and its two sides' motions.
-struct PlacedPair<'a, T> {
-    pair: ChainPair,
-    ta: &'a Hierarchy<T>,
-    tb: &'a Hierarchy<T>,
-    a: &'a LinkMotion<T>,
-    b: &'a LinkMotion<T>,
 }

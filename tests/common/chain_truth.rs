@@ -168,6 +168,12 @@ impl Tree {
 /// exactly when some triangle pair meets (a sphere gap above zero holds no
 /// meeting pair).
 fn distance(a: &Tree, pa: &Place, b: &Tree, pb: &Place, cap: f64) -> f64 {
+    distance_within(a, pa, b, pb, cap, 0.8)
+}
+
+/// [`distance`] with node pairs within `keep` of the best kept unrefined
+/// (`keep = 1`: the exact distance, up to the triangle distances' rounding).
+fn distance_within(a: &Tree, pa: &Place, b: &Tree, pb: &Place, cap: f64, keep: f64) -> f64 {
     let mut best = cap;
     let mut kept = f64::INFINITY;
     let mut stack = vec![(0usize, 0usize)];
@@ -178,7 +184,7 @@ fn distance(a: &Tree, pa: &Place, b: &Tree, pb: &Place, cap: f64) -> f64 {
         if gap >= best {
             continue;
         }
-        if gap > 0.0 && gap >= 0.8 * best {
+        if gap > 0.0 && gap >= keep * best {
             kept = kept.min(gap);
             continue;
         }
@@ -233,6 +239,10 @@ pub struct Truth {
     /// The joint above each link.
     parent_joint: Vec<Option<usize>>,
     obstacles: Vec<(Tree, Place)>,
+    /// The shape obstacles as the truth sees them ([`Truth::with_shapes`]),
+    /// each as `(lower, upper)`: the same shape for an exact kind, two
+    /// polytopes about and in a curved one.
+    shapes: Vec<(TruthShape, TruthShape)>,
     /// The pairs the scene checks.
     pub pairs: Vec<ChainPair>,
 }
@@ -340,8 +350,74 @@ impl Truth {
             links,
             parent_joint,
             obstacles,
+            shapes: Vec::new(),
             pairs,
         }
+    }
+
+    /// The truth with the scene's shape obstacles given as `shapes` (in the
+    /// scene's order; `(lower, upper)` as in [`TruthShape`]), their pairs
+    /// with every link with geometry checked.
+    pub fn with_shapes(mut self, shapes: Vec<(TruthShape, TruthShape)>) -> Self {
+        for l in 0..self.links.len() {
+            if self.links[l].is_some() {
+                for s in 0..shapes.len() {
+                    self.pairs.push(ChainPair::Shape { link: l, shape: s });
+                }
+            }
+        }
+        self.shapes = shapes;
+        self
+    }
+
+    /// The exact distance of one pair at `places` as `(lower, upper)`
+    /// (equal but for a curved shape's two polytopes), not refined past `cap`.
+    pub fn pair_distance_exact(&self, pair: ChainPair, places: &[Place], cap: f64) -> (f64, f64) {
+        match pair {
+            ChainPair::Shape { link, shape } => match &self.links[link] {
+                Some(t) => {
+                    let (lo, hi) = &self.shapes[shape];
+                    (
+                        shape_distance(t, &places[link], lo, cap),
+                        shape_distance(t, &places[link], hi, cap),
+                    )
+                }
+                None => (f64::INFINITY, f64::INFINITY),
+            },
+            ChainPair::Obstacle { link, obstacle } => {
+                let (t, p) = &self.obstacles[obstacle];
+                let d = match &self.links[link] {
+                    Some(a) => distance_within(a, &places[link], t, p, cap, 1.0),
+                    None => f64::INFINITY,
+                };
+                (d, d)
+            }
+            ChainPair::SelfCollision { a, b } => {
+                let d = match (&self.links[a], &self.links[b]) {
+                    (Some(ta), Some(tb)) => {
+                        distance_within(ta, &places[a], tb, &places[b], cap, 1.0)
+                    }
+                    _ => f64::INFINITY,
+                };
+                (d, d)
+            }
+            _ => (f64::INFINITY, f64::INFINITY),
+        }
+    }
+
+    /// The smallest exact distance over the pairs at `q` as `(lower,
+    /// upper)`, and the pair attaining the upper one.
+    pub fn min_distance_exact(&self, q: &[f64]) -> (f64, f64, Option<ChainPair>) {
+        let places = self.places(q);
+        let mut best = (f64::INFINITY, f64::INFINITY, None);
+        for &p in &self.pairs {
+            let (lo, hi) = self.pair_distance_exact(p, &places, best.1);
+            best.0 = best.0.min(lo);
+            if hi < best.1 {
+                best = (best.0, hi, Some(p));
+            }
+        }
+        best
     }
 
     /// Every link's placement at `q`.
@@ -410,7 +486,12 @@ impl Truth {
                 (Some(ta), Some(tb)) => distance(ta, &places[a], tb, &places[b], cap),
                 _ => f64::INFINITY,
             },
-            // The truth takes every obstacle as a mesh.
+            // A curved shape by the polytope inside it: a touch found is
+            // one of the shape's.
+            ChainPair::Shape { link, shape } => match &self.links[link] {
+                Some(t) => shape_distance(t, &places[link], &self.shapes[shape].1, cap),
+                None => f64::INFINITY,
+            },
             _ => f64::INFINITY,
         }
     }
@@ -448,6 +529,7 @@ impl Truth {
         let bound = |p: ChainPair| match p {
             ChainPair::Obstacle { link, .. } => speeds[link],
             ChainPair::SelfCollision { a, b } => speeds[a] + speeds[b],
+            ChainPair::Shape { link, .. } => speeds[link],
             _ => f64::INFINITY,
         };
         let mut touch: Option<(f64, f64, ChainPair)> = None;
@@ -492,4 +574,165 @@ impl Truth {
             samples,
         }
     }
+}
+
+/// A shape obstacle as the truth sees it, in world coordinates.
+#[derive(Clone, Debug)]
+pub enum TruthShape {
+    /// A convex polytope: its triangles and its faces' planes `(n, d)`
+    /// (unit outward `n`, inside where `n . x <= d`).
+    Polytope {
+        tris: Vec<[V3; 3]>,
+        planes: Vec<(V3, f64)>,
+    },
+    /// The half-space `n . (x - p) <= 0` (unit `n`).
+    Plane { n: V3, p: V3 },
+    /// Balls of radius `r` about the points.
+    Points { points: Vec<V3>, r: f64 },
+}
+
+impl TruthShape {
+    /// The convex polytope of `tris` (a closed convex mesh in the frame
+    /// `place`, containing the frame's origin), in the world.
+    pub fn polytope(tris: &[[V3; 3]], place: &Place) -> Self {
+        let tris: Vec<[V3; 3]> = tris.iter().map(|t| t.map(|p| place.point(p))).collect();
+        let origin = place.x;
+        let planes = tris
+            .iter()
+            .filter_map(|t| {
+                let n = cross(sub(t[1], t[0]), sub(t[2], t[0]));
+                let l = norm(n);
+                if l == 0.0 {
+                    return None;
+                }
+                let mut n = n.map(|x| x / l);
+                if dot(n, sub(t[0], origin)) < 0.0 {
+                    n = n.map(|x| -x);
+                }
+                Some((n, dot(n, t[0])))
+            })
+            .collect();
+        TruthShape::Polytope { tris, planes }
+    }
+
+    /// A lower bound of the distance from the ball `(c, rho)` to the shape.
+    fn ball_lower(&self, c: V3, rho: f64) -> f64 {
+        match self {
+            TruthShape::Polytope { planes, .. } => {
+                planes
+                    .iter()
+                    .map(|(n, d)| dot(*n, c) - d)
+                    .fold(f64::NEG_INFINITY, f64::max)
+                    - rho
+            }
+            TruthShape::Plane { n, p } => dot(*n, sub(c, *p)) - rho,
+            TruthShape::Points { points, r } => {
+                points
+                    .iter()
+                    .map(|p| norm(sub(c, *p)))
+                    .fold(f64::INFINITY, f64::min)
+                    - r
+                    - rho
+            }
+        }
+    }
+
+    /// The exact distance from the triangle `t` (world) to the shape (0
+    /// when they meet).
+    fn triangle(&self, t: &[V3; 3]) -> f64 {
+        match self {
+            TruthShape::Polytope { tris, planes } => {
+                let inside = |p: &V3| planes.iter().all(|(n, d)| dot(*n, *p) <= *d);
+                if t.iter().any(inside) {
+                    return 0.0;
+                }
+                let ta = t.map(Point3::from_array);
+                tris.iter()
+                    .map(|b| {
+                        try_triangle_triangle(&ta, &b.map(Point3::from_array))
+                            .map_or(0.0, |c| c.distance)
+                    })
+                    .fold(f64::INFINITY, f64::min)
+            }
+            TruthShape::Plane { n, p } => t
+                .iter()
+                .map(|x| dot(*n, sub(*x, *p)))
+                .fold(f64::INFINITY, f64::min)
+                .max(0.0),
+            TruthShape::Points { points, r } => points
+                .iter()
+                .map(|p| point_triangle(*p, t) - r)
+                .fold(f64::INFINITY, f64::min)
+                .max(0.0),
+        }
+    }
+}
+
+fn dot(a: V3, b: V3) -> f64 {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn cross(a: V3, b: V3) -> V3 {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// The distance from `p` to the triangle `t` (Ericson's closest point by
+/// Voronoi regions, written here, not the crate's).
+fn point_triangle(p: V3, t: &[V3; 3]) -> f64 {
+    let [a, b, c] = *t;
+    let (ab, ac, ap) = (sub(b, a), sub(c, a), sub(p, a));
+    let (d1, d2) = (dot(ab, ap), dot(ac, ap));
+    if d1 <= 0.0 && d2 <= 0.0 {
+        return norm(ap);
+    }
+    let bp = sub(p, b);
+    let (d3, d4) = (dot(ab, bp), dot(ac, bp));
+    if d3 >= 0.0 && d4 <= d3 {
+        return norm(bp);
+    }
+    let at = |u: f64, v: f64| norm(sub(p, add(a, add(ab.map(|x| x * u), ac.map(|x| x * v)))));
+    let vc = d1 * d4 - d3 * d2;
+    if vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 {
+        return at(d1 / (d1 - d3), 0.0);
+    }
+    let cp = sub(p, c);
+    let (d5, d6) = (dot(ab, cp), dot(ac, cp));
+    if d6 >= 0.0 && d5 <= d6 {
+        return norm(cp);
+    }
+    let vb = d5 * d2 - d1 * d6;
+    if vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 {
+        return at(0.0, d2 / (d2 - d6));
+    }
+    let va = d3 * d6 - d5 * d4;
+    if va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 {
+        let w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+        return norm(sub(p, add(b, sub(c, b).map(|x| x * w))));
+    }
+    let denom = 1.0 / (va + vb + vc);
+    at(vb * denom, vc * denom)
+}
+
+/// The exact distance from a placed tree's triangles to a shape (branch
+/// and bound with no slack), not refined past `cap`.
+fn shape_distance(a: &Tree, pa: &Place, shape: &TruthShape, cap: f64) -> f64 {
+    let mut best = cap;
+    let mut stack = vec![0usize];
+    while let Some(i) = stack.pop() {
+        let (c, r, l, rr) = a.nodes[i];
+        if shape.ball_lower(pa.point(c), r) >= best {
+            continue;
+        }
+        if rr == usize::MAX {
+            best = best.min(shape.triangle(&a.tris[l].map(|p| pa.point(p))));
+        } else {
+            stack.push(l);
+            stack.push(rr);
+        }
+    }
+    best
 }

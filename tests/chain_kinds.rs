@@ -1,0 +1,521 @@
+//! Every query of a `ChainScene` on every obstacle kind (issue 63): meshes,
+//! convex primitives, half-spaces and point clouds, alone and mixed, against
+//! an independent truth (`tests/common/chain_truth.rs`: its own forward
+//! kinematics, sphere trees, exact triangle distances to polytopes, planes
+//! and points, dense sampling), on MotionBenchMaker's three scenes with the
+//! Panda and on mixed scenes.
+//!
+//! `CHAIN_KINDS_SEGMENTS` and `CHAIN_KINDS_CONFIGS` set the segments and
+//! configurations per scene (defaults 40 and 200; the closing note's run
+//! uses 500 and 2,000).
+
+#[path = "common/arm_scene.rs"]
+mod arm_scene;
+#[path = "common/chain_truth.rs"]
+mod chain_truth;
+
+use arm_scene::{bare_arm_scene, joint_limits, panda_edge, Arm, PANDA_FINGERS};
+use chain_truth::{Place, Truth, TruthShape};
+use motion_bound::chain::{
+    ChainBuilder, ChainPair, ChainScene, JointKind, JointSpec, Obstacle, SegmentOutcome,
+    ShapeObstacle,
+};
+use motion_bound::testkit::toi::Rng;
+use motion_bound::{bodies, Convex, Pose, TriMesh, Vec3};
+use serde_json::Value;
+
+type Error = Box<dyn std::error::Error>;
+type V3 = [f64; 3];
+type M3 = [[f64; 3]; 3];
+
+fn count(var: &str, default: usize) -> usize {
+    std::env::var(var)
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(default)
+}
+
+/// The truth's sampling tolerance (world units).
+const TOL: f64 = 1e-4;
+
+/// Sides of the prisms about and in a cylinder (the truth's two bounds).
+const SIDES: u32 = 64;
+
+fn place(p: &Pose<f64>) -> Place {
+    Place {
+        r: p.rotation,
+        x: p.translation.to_array(),
+    }
+}
+
+fn corners(m: &TriMesh<f64>) -> Vec<[V3; 3]> {
+    m.triangle_corners().collect()
+}
+
+fn mat_mul(a: &M3, b: &M3) -> M3 {
+    let mut o = [[0.0; 3]; 3];
+    for i in 0..3 {
+        for j in 0..3 {
+            o[i][j] = (0..3).map(|k| a[i][k] * b[k][j]).sum();
+        }
+    }
+    o
+}
+
+fn vec3(v: &Value) -> Result<V3, Error> {
+    let a = v.as_array().ok_or("an array")?;
+    Ok([0, 1, 2].map(|i| a.get(i).and_then(Value::as_f64).unwrap_or(f64::NAN)))
+}
+
+fn rotation(v: &Value) -> Result<M3, Error> {
+    let a = v.as_array().ok_or("rows")?;
+    let mut r = [[0.0; 3]; 3];
+    for (i, row) in a.iter().take(3).enumerate() {
+        r[i] = vec3(row)?;
+    }
+    Ok(r)
+}
+
+/// A cylinder (half-length `h`, radius `r`, along the frame's z) as the
+/// truth's two polytopes: the prism about it (its faces at least `r` from
+/// the axis) and the prism in it.
+fn cylinder_truth(r: f64, h: f64, at: &Place) -> Result<(TruthShape, TruthShape), Error> {
+    let outer = r / (std::f64::consts::PI / f64::from(SIDES)).cos() * (1.0 + 1e-9);
+    let about = bodies::prism::<f64>(outer, 2.0 * h, SIDES, 1)?;
+    let inside = bodies::prism::<f64>(r, 2.0 * h, SIDES, 1)?;
+    Ok((
+        TruthShape::polytope(&corners(&about), at),
+        TruthShape::polytope(&corners(&inside), at),
+    ))
+}
+
+/// Adds a cylinder along the world pose's z (`file`) to the scene and the truth.
+fn add_cylinder(
+    scene: &mut ChainScene<f64>,
+    truth: &mut Vec<(TruthShape, TruthShape)>,
+    name: &str,
+    r: f64,
+    h: f64,
+    file: Pose<f64>,
+) -> Result<(), Error> {
+    // Ours are along their y: turn y onto z.
+    let y_to_z = [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]];
+    let pose = Pose {
+        rotation: mat_mul(&file.rotation, &y_to_z),
+        ..file
+    };
+    scene.add_shape(ShapeObstacle::try_new(
+        name,
+        Convex::try_cylinder(h, r)?,
+        pose,
+    )?);
+    truth.push(cylinder_truth(r, h, &place(&file))?);
+    Ok(())
+}
+
+/// Adds a cuboid to the scene and the truth (its 12 triangles, exactly).
+fn add_cuboid(
+    scene: &mut ChainScene<f64>,
+    truth: &mut Vec<(TruthShape, TruthShape)>,
+    name: &str,
+    h: V3,
+    pose: Pose<f64>,
+) -> Result<(), Error> {
+    scene.add_shape(ShapeObstacle::try_new(name, Convex::try_cuboid(h)?, pose)?);
+    let mesh = bodies::cuboid::<f64>(h.map(|x| 2.0 * x))?;
+    let t = TruthShape::polytope(&corners(&mesh), &place(&pose));
+    truth.push((t.clone(), t));
+    Ok(())
+}
+
+/// The Panda in MotionBenchMaker's scene `name` (cuboids and cylinders as
+/// shapes), and the truth's shapes.
+fn mbm(name: &str) -> Result<(ChainScene<f64>, Vec<(TruthShape, TruthShape)>), Error> {
+    let (mut scene, _) = bare_arm_scene(Arm::Panda)?;
+    let path = format!(
+        "{}/data/mbm/{name}.json",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/..")
+    );
+    let json: Value = serde_json::from_str(&std::fs::read_to_string(&path)?)?;
+    let list = |key: &str| json[key].as_array().cloned().unwrap_or_default();
+    let mut truth = Vec::new();
+    for c in list("cuboids") {
+        let pose = Pose {
+            rotation: rotation(&c["rotation"])?,
+            translation: Vec3::from_array(vec3(&c["center"])?),
+        };
+        add_cuboid(
+            &mut scene,
+            &mut truth,
+            "cuboid",
+            vec3(&c["half_extents"])?,
+            pose,
+        )?;
+    }
+    for c in list("cylinders") {
+        let file = Pose {
+            rotation: rotation(&c["rotation"])?,
+            translation: Vec3::from_array(vec3(&c["center"])?),
+        };
+        let r = c["radius"].as_f64().ok_or("radius")?;
+        let h = c["half_length"].as_f64().ok_or("half_length")?;
+        add_cylinder(&mut scene, &mut truth, "cylinder", r, h, file)?;
+    }
+    Ok((scene, truth))
+}
+
+/// The Panda among every kind at once: a cuboid and a cylinder (shapes),
+/// a mesh obstacle (a box's triangles), a floor (a half-space) and a point
+/// cloud of 150 balls, placed by `seed`.
+fn mixed(seed: u64) -> Result<(ChainScene<f64>, Vec<(TruthShape, TruthShape)>), Error> {
+    let (mut scene, _) = bare_arm_scene(Arm::Panda)?;
+    let mut rng = Rng::new(seed);
+    let mut truth = Vec::new();
+    let at = |rng: &mut Rng, z: f64| {
+        let a = rng.range(-3.1, 3.1);
+        let d = rng.range(0.35, 0.65);
+        Vec3::new(d * a.cos(), d * a.sin(), z)
+    };
+    let box_pose = Pose::from_translation(at(&mut rng, 0.3));
+    add_cuboid(&mut scene, &mut truth, "box", [0.08, 0.12, 0.3], box_pose)?;
+    let cyl = Pose::from_translation(at(&mut rng, 0.4));
+    add_cylinder(&mut scene, &mut truth, "pole", 0.04, 0.4, cyl)?;
+    // The floor, 2 cm below the base.
+    scene.add_shape(ShapeObstacle::try_half_space(
+        "floor",
+        [0.0, 0.0, 1.0],
+        [0.0, 0.0, -0.02],
+    )?);
+    let floor = TruthShape::Plane {
+        n: [0.0, 0.0, 1.0],
+        p: [0.0, 0.0, -0.02],
+    };
+    truth.push((floor.clone(), floor));
+    // A cloud: a depth camera's patch of a wall.
+    let c = at(&mut rng, 0.5);
+    let points: Vec<V3> = (0..150)
+        .map(|_| {
+            [
+                c.x + rng.range(-0.1, 0.1),
+                c.y + rng.range(-0.1, 0.1),
+                c.z + rng.range(-0.2, 0.2),
+            ]
+        })
+        .collect();
+    scene.add_shape(ShapeObstacle::try_points("cloud", &points, 0.01)?);
+    let cloud = TruthShape::Points { points, r: 0.01 };
+    truth.push((cloud.clone(), cloud));
+    // A mesh obstacle: a shelf board as triangles.
+    let board = bodies::cuboid::<f64>([0.3, 0.2, 0.02])?;
+    scene.add_obstacle(Obstacle::try_new(
+        "board",
+        board,
+        Pose::from_translation(at(&mut rng, 0.45)),
+    )?);
+    Ok((scene, truth))
+}
+
+fn random_q(rng: &mut Rng, limits: &[[f64; 2]]) -> Vec<f64> {
+    limits[..7]
+        .iter()
+        .map(|&[lo, hi]| rng.range(lo, hi))
+        .chain([PANDA_FINGERS, PANDA_FINGERS])
+        .collect()
+}
+
+#[derive(Debug, Default)]
+struct Tally {
+    configs: usize,
+    /// Configurations whose nearest pair is of an exact kind (not a
+    /// cylinder's two bounds).
+    exact_min: usize,
+    above_truth: usize,
+    loose: usize,
+    worst_rel: f64,
+    /// The truth's distance where `worst_rel` was seen.
+    worst_at: f64,
+    collides_wrong: usize,
+    ambiguous: usize,
+    segments: usize,
+    contacts: usize,
+    truth_touches: usize,
+    missed: usize,
+    late: usize,
+    undecided: usize,
+}
+
+/// Runs the configurations and segments of one scene against its truth.
+fn run(
+    scene: &ChainScene<f64>,
+    truth: &Truth,
+    seed: u64,
+    configs: usize,
+    segments: usize,
+) -> Tally {
+    let limits = joint_limits(scene.chain());
+    let mut rng = Rng::new(seed);
+    let mut t = Tally::default();
+    for _ in 0..configs {
+        let q = random_q(&mut rng, &limits);
+        let (lo, hi, pair) = truth.min_distance_exact(&q);
+        let (c, _) = scene.clearance(&q).expect("clearance takes every kind");
+        t.configs += 1;
+        if lo == hi {
+            t.exact_min += 1;
+        }
+        // Never above the true distance (at most `hi`).
+        if c > hi {
+            t.above_truth += 1;
+            eprintln!("clearance {c} above the truth's {hi} ({pair:?}) at {q:?}");
+        }
+        // Within 1e-9 relative of it (of `lo`, the least it can be).
+        if lo > 0.0 {
+            let rel = (lo - c) / lo;
+            if lo == hi && rel > t.worst_rel {
+                (t.worst_rel, t.worst_at) = (rel, lo);
+            }
+            if c < lo * (1.0 - 1e-9) - 1e-12 {
+                t.loose += 1;
+                eprintln!("clearance {c} below the truth's {lo} by {rel} ({pair:?})");
+            }
+        }
+        let collides = scene.collides_at(&q).expect("collides_at takes every kind");
+        if hi <= 0.0 && !collides || lo > 1e-9 && collides {
+            t.collides_wrong += 1;
+            eprintln!("collides_at {collides} with the truth's [{lo}, {hi}] ({pair:?})");
+        } else if !(hi <= 0.0 || lo > 1e-9) {
+            t.ambiguous += 1;
+        }
+    }
+    let mut range = |a: f64, b: f64| rng.range(a, b);
+    for e in 0..segments {
+        // Half the segments from a free configuration.
+        let (q0, q1) = loop {
+            let (q0, q1) = panda_edge(&mut range, &limits);
+            if e % 2 == 1 || !truth.touches_at(&q0) {
+                break (q0, q1);
+            }
+        };
+        let report = scene
+            .check_segment(&q0, &q1)
+            .expect("check_segment takes every kind");
+        let path = scene
+            .check_path(&[q0.clone(), q1.clone()])
+            .expect("check_path takes every kind");
+        assert_eq!(
+            path.outcome, report.outcome,
+            "a path of one segment is that segment"
+        );
+        let sampled = truth.sample(&q0, &q1, TOL);
+        t.segments += 1;
+        let found = match report.outcome {
+            SegmentOutcome::Contact(c) => {
+                t.contacts += 1;
+                Some(c.time)
+            }
+            SegmentOutcome::IterationLimit { time, .. } => {
+                t.undecided += 1;
+                Some(time)
+            }
+            SegmentOutcome::Separated => None,
+            _ => None,
+        };
+        if let Some((touch, _, pair)) = sampled.touch {
+            t.truth_touches += 1;
+            match found {
+                None => {
+                    t.missed += 1;
+                    eprintln!("missed {pair:?} at {touch}: {q0:?} -> {q1:?}");
+                }
+                Some(time) if time > touch => {
+                    t.late += 1;
+                    eprintln!("late: {time} after the truth's touch at {touch} ({pair:?}): {q0:?} -> {q1:?}");
+                }
+                Some(_) => {}
+            }
+        }
+    }
+    t
+}
+
+fn check(name: &str, t: &Tally) {
+    println!("{name}: {t:?}");
+    assert_eq!(
+        t.above_truth, 0,
+        "{name}: clearance above the true distance"
+    );
+    assert_eq!(
+        t.loose, 0,
+        "{name}: clearance more than 1e-9 below the true distance"
+    );
+    assert_eq!(t.collides_wrong, 0, "{name}: collides_at wrong");
+    assert_eq!(t.missed, 0, "{name}: a contact missed");
+    assert_eq!(t.late, 0, "{name}: a contact late");
+    assert!(
+        t.contacts > 0 && t.truth_touches > 0,
+        "{name}: no contact exercised"
+    );
+}
+
+#[test]
+fn mbm_scenes_with_primitives_against_the_truth() {
+    let (configs, segments) = (
+        count("CHAIN_KINDS_CONFIGS", 200),
+        count("CHAIN_KINDS_SEGMENTS", 40),
+    );
+    for (i, name) in ["table_pick", "bookshelf_small", "cage"].iter().enumerate() {
+        let (scene, shapes) = mbm(name).expect("scene");
+        let truth = Truth::new(&scene).with_shapes(shapes);
+        let t = run(&scene, &truth, 63 + i as u64, configs, segments);
+        check(name, &t);
+    }
+}
+
+#[test]
+fn mixed_scenes_against_the_truth() {
+    let (configs, segments) = (
+        count("CHAIN_KINDS_CONFIGS", 200),
+        count("CHAIN_KINDS_SEGMENTS", 40),
+    );
+    for seed in [1, 2] {
+        let (scene, shapes) = mixed(seed).expect("scene");
+        let truth = Truth::new(&scene).with_shapes(shapes);
+        let t = run(&scene, &truth, 630 + seed, configs, segments);
+        check(&format!("mixed {seed}"), &t);
+    }
+}
+
+/// A one-link arm (a bar along x turning about z) and one obstacle of each
+/// kind in its way at 45 degrees: every query takes it, and the sweep
+/// through it is a contact, the sweep away separated.
+#[test]
+fn every_query_takes_every_obstacle_kind() {
+    let bar = TriMesh::try_new(
+        vec![
+            [0.0, -0.02, -0.02],
+            [1.0, 0.0, 0.0],
+            [0.0, 0.02, -0.02],
+            [0.0, 0.0, 0.02],
+        ],
+        vec![[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
+    )
+    .expect("bar");
+    let at = Pose::from_translation(Vec3::new(0.5, 0.5, 0.0));
+    let kinds: Vec<(&str, Box<dyn Fn(&mut ChainScene<f64>)>)> = vec![
+        (
+            "mesh",
+            Box::new(move |s| {
+                let m = bodies::cuboid::<f64>([0.05, 0.05, 0.4]).expect("box");
+                s.add_obstacle(Obstacle::try_new("mesh", m, at).expect("mesh"));
+            }),
+        ),
+        ("ball", shape(Convex::try_ball(0.05), at)),
+        ("capsule", shape(Convex::try_capsule(0.2, 0.03), at)),
+        ("cuboid", shape(Convex::try_cuboid([0.05, 0.05, 0.3]), at)),
+        ("cylinder", shape(Convex::try_cylinder(0.3, 0.03), at)),
+        ("cone", shape(Convex::try_cone(0.3, 0.05), at)),
+        (
+            "rounded cuboid",
+            shape(
+                Convex::try_cuboid([0.03, 0.03, 0.2]).and_then(|c| c.try_rounded(0.01)),
+                at,
+            ),
+        ),
+        (
+            "half-space",
+            Box::new(|s| {
+                // The wall x + y >= 1.3 (outward normal towards the
+                // origin): the bar's tip is in it from 22 to 68 degrees.
+                let wall =
+                    ShapeObstacle::try_half_space("wall", [-1.0, -1.0, 0.0], [0.65, 0.65, 0.0]);
+                s.add_shape(wall.expect("wall"));
+            }),
+        ),
+        (
+            "point cloud",
+            Box::new(|s| {
+                let pts: Vec<V3> = (0..20)
+                    .map(|i| [0.5, 0.5, -0.1 + 0.01 * f64::from(i)])
+                    .collect();
+                s.add_shape(ShapeObstacle::try_points("cloud", &pts, 0.01).expect("cloud"));
+            }),
+        ),
+    ];
+    for (name, add) in &kinds {
+        let mut b = ChainBuilder::new();
+        let base = b.add_link("base", None).expect("base");
+        let arm = b.add_link("arm", Some(bar.clone())).expect("arm");
+        b.add_joint(JointSpec {
+            name: "j".into(),
+            kind: JointKind::Revolute,
+            parent: base,
+            child: arm,
+            origin: Pose::IDENTITY,
+            axis: [0.0, 0.0, 1.0],
+            limits: Some([-3.0, 3.0]),
+        })
+        .expect("joint");
+        let mut scene = ChainScene::new(b.build().expect("chain"));
+        add(&mut scene);
+        let (start, toward, back) = ([0.0], [1.5], [-1.5]);
+        let hit = scene.check_segment(&start, &toward).expect(name);
+        let c = hit
+            .outcome
+            .contact()
+            .unwrap_or_else(|| panic!("{name}: {hit:?}"));
+        assert!(c.time > 0.2 && c.time < 0.55, "{name}: {c:?}");
+        assert!(
+            matches!(c.pair, ChainPair::Obstacle { .. } | ChainPair::Shape { .. }),
+            "{name}: {c:?}"
+        );
+        let miss = scene.check_segment(&start, &back).expect(name);
+        assert_eq!(miss.outcome, SegmentOutcome::Separated, "{name}");
+        let path = scene.check_path(&[[0.0], [-1.0], [1.5]]).expect(name);
+        assert_eq!(path.segment, 1, "{name}: {path:?}");
+        let (free, _) = scene.clearance(&[-1.0]).expect(name);
+        let (touching, pair) = scene.clearance(&[std::f64::consts::FRAC_PI_4]).expect(name);
+        assert!(
+            free > 0.1 && touching <= 0.0 && pair.is_some(),
+            "{name}: {free} {touching}"
+        );
+        assert!(!scene.collides_at(&[-1.0]).expect(name), "{name}");
+        assert!(
+            scene
+                .collides_at(&[std::f64::consts::FRAC_PI_4])
+                .expect(name),
+            "{name}"
+        );
+        assert!(!scene.edge_is_free(&[0.0], &[1.5]).expect(name), "{name}");
+        assert!(scene.edge_is_free(&[0.0], &[-1.5]).expect(name), "{name}");
+        assert!(
+            scene.check_edge(&[0.0], &[1.5]).expect(name).outcome
+                != motion_bound::chain::EdgeOutcome::Free,
+            "{name}"
+        );
+        assert_eq!(
+            scene
+                .edges_are_free(&[([0.0], [1.5]), ([0.0], [-1.5])])
+                .expect(name),
+            vec![false, true],
+            "{name}"
+        );
+        // Link pairs only: the shapes are kept.
+        assert!(
+            scene
+                .allow_collisions_at(&[0.0], 0.0)
+                .expect(name)
+                .is_empty(),
+            "{name}"
+        );
+    }
+}
+
+fn shape(
+    c: Result<Convex<'static, f64>, motion_bound::InputError>,
+    at: Pose<f64>,
+) -> Box<dyn Fn(&mut ChainScene<f64>)> {
+    let c = c.expect("shape");
+    Box::new(move |s| {
+        s.add_shape(ShapeObstacle::try_new("shape", c.clone(), at).expect("shape"));
+    })
+}
