@@ -432,10 +432,10 @@ class SegmentReport:
 class ChainScene:
     """A chain in still surroundings, for a planner's motion validator.
     Obstacles: primitives, half-spaces and compounds of them (shape obstacles,
-    measured exactly), meshes, point clouds. `check_edge`, `edge_is_free` and
-    `edges_are_free` and `collides_at` take every kind; `check_segment`,
-    `check_path`, `clearance` and `allow_collisions_at` take mesh obstacles
-    only (`QueryError` otherwise). Every query releases the GIL; picklable
+    measured exactly), meshes, point clouds, mixed in one scene. Every query
+    takes every kind: `check_edge`, `edge_is_free`, `edges_are_free`,
+    `collides_at`, `check_segment`, `check_path`, `clearance` and
+    `allow_collisions_at`. Every query releases the GIL; picklable
     (the chain's URDF path, then what was added, replayed)."""
 
     def __init__(

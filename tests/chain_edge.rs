@@ -1010,15 +1010,17 @@ fn bad_edge_input_is_a_typed_error_and_a_tiny_budget_is_undecided() {
     }
     expect(&[0.0], &[3.0 + 1e-9], ChainError::BeyondLimits(0), &scene);
     expect(&[-3.5], &[0.0], ChainError::BeyondLimits(0), &scene);
-    // Shapes: the first-contact queries refuse them.
+    // Shapes: every query takes them (issue 63; `tests/chain_kinds.rs`
+    // checks their answers against the truth).
     assert!(
-        matches!(
-            scene.check_segment(&[0.0], &[1.0]),
-            Err(ChainError::InvalidParameter(_))
-        ),
+        scene.check_segment(&[0.0], &[1.0]).is_ok(),
         "check_segment with shapes"
     );
-    // The static check takes shapes (the edge engine's check at a point).
+    assert!(
+        scene.check_path(&[[0.0], [1.0]]).is_ok(),
+        "check_path with shapes"
+    );
+    assert!(scene.clearance(&[0.0]).is_ok(), "clearance with shapes");
     assert!(scene.collides_at(&[0.0]).is_ok(), "collides_at with shapes");
     // Bad parameters.
     for bad in [

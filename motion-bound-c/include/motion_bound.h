@@ -1008,8 +1008,8 @@ enum mb_status mb_chain_scene_allow_collision(struct mb_chain_scene *scene,
  * Never checks again the pairs of links whose surfaces are within
  * `distance` (at least 0) at configuration `q` (an SRDF's pairs in
  * collision by default, fingers closed on each other); writes how many
- * pairs that allowed to `*out_count` (`NULL` to skip). Call it before
- * adding shape obstacles or point clouds (`MB_STATUS_QUERY_ERROR` after).
+ * pairs that allowed to `*out_count` (`NULL` to skip). Link pairs only:
+ * obstacles of every kind stay checked.
  *
  * **Thread safety**: no other thread may use `scene` during the call.
  *
@@ -1120,9 +1120,8 @@ enum mb_status mb_chain_scene_check_edge(const struct mb_chain_scene *scene,
                                          struct mb_edge_report *out);
 
 /**
- * The first contact along the joint-space segment `q0 -> q1` (mesh
- * obstacles only: `MB_STATUS_QUERY_ERROR` in a scene with shapes or point
- * clouds), written to `*out`: its time (never later than the first touch),
+ * The first contact along the joint-space segment `q0 -> q1` (every
+ * obstacle kind: meshes, shapes and point clouds), written to `*out`: its time (never later than the first touch),
  * pair and witnesses; separated; or an iteration limit.
  *
  * **Thread safety**: as `mb_chain_scene_edge_is_free`.
@@ -1160,9 +1159,8 @@ enum mb_status mb_chain_scene_collides_at(const struct mb_chain_scene *scene,
  * A certified lower bound of the smallest distance over the checked pairs
  * at configuration `q` (`<= 0` for touching or overlapping surfaces, up to
  * rounding; `INFINITY` when nothing is checked), written to `*out_distance`,
- * and the pair attaining it to `*out_pair` (`NULL` to skip). Mesh
- * obstacles only (`MB_STATUS_QUERY_ERROR` in a scene with shapes or point
- * clouds).
+ * and the pair attaining it to `*out_pair` (`NULL` to skip). Every
+ * obstacle kind: meshes, shapes and point clouds.
  *
  * **Thread safety**: as `mb_chain_scene_edge_is_free`.
  *

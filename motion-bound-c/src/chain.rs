@@ -402,23 +402,6 @@ impl MbChainScene {
         self.scene.params().within_limits
     }
 
-    /// The first-contact queries and the clearance take mesh obstacles only.
-    fn meshes_only(&self, query: &str) -> Res<()> {
-        if self.scene.shapes().is_empty() {
-            return Ok(());
-        }
-        let names: Vec<&str> = self.scene.shapes().iter().map(|s| s.name()).collect();
-        Err(Failure::new(
-            MbStatus::QueryError,
-            format!(
-                "{query} takes scenes of mesh obstacles only; this one has shape obstacles or \
-                 point clouds ({}): the edge queries and mb_chain_scene_collides_at take every \
-                 kind",
-                names.join(", ")
-            ),
-        ))
-    }
-
     fn link(&self, name: &str, what: &str) -> Res<usize> {
         self.scene.chain().link_index(name).map_err(|_| {
             Failure::new(
@@ -952,8 +935,8 @@ pub unsafe extern "C" fn mb_chain_scene_allow_collision(
 /// Never checks again the pairs of links whose surfaces are within
 /// `distance` (at least 0) at configuration `q` (an SRDF's pairs in
 /// collision by default, fingers closed on each other); writes how many
-/// pairs that allowed to `*out_count` (`NULL` to skip). Call it before
-/// adding shape obstacles or point clouds (`MB_STATUS_QUERY_ERROR` after).
+/// pairs that allowed to `*out_count` (`NULL` to skip). Link pairs only:
+/// obstacles of every kind stay checked.
 ///
 /// **Thread safety**: no other thread may use `scene` during the call.
 ///
@@ -980,7 +963,6 @@ pub unsafe extern "C" fn mb_chain_scene_allow_collisions_at(
                 format!("distance must be finite and at least 0 (got {distance})"),
             ));
         }
-        s.meshes_only("mb_chain_scene_allow_collisions_at")?;
         let pairs = s
             .scene
             .allow_collisions_at(q, distance)
@@ -1281,9 +1263,8 @@ pub unsafe extern "C" fn mb_chain_scene_check_edge(
     })
 }
 
-/// The first contact along the joint-space segment `q0 -> q1` (mesh
-/// obstacles only: `MB_STATUS_QUERY_ERROR` in a scene with shapes or point
-/// clouds), written to `*out`: its time (never later than the first touch),
+/// The first contact along the joint-space segment `q0 -> q1` (every
+/// obstacle kind: meshes, shapes and point clouds), written to `*out`: its time (never later than the first touch),
 /// pair and witnesses; separated; or an iteration limit.
 ///
 /// **Thread safety**: as `mb_chain_scene_edge_is_free`.
@@ -1310,7 +1291,6 @@ pub unsafe extern "C" fn mb_chain_scene_check_segment(
                 coordinates(chain, q1, dof, lim, "q1")?,
             )
         };
-        s.meshes_only("mb_chain_scene_check_segment")?;
         let r = s
             .scene
             .check_segment(a, b)
@@ -1400,9 +1380,8 @@ pub unsafe extern "C" fn mb_chain_scene_collides_at(
 /// A certified lower bound of the smallest distance over the checked pairs
 /// at configuration `q` (`<= 0` for touching or overlapping surfaces, up to
 /// rounding; `INFINITY` when nothing is checked), written to `*out_distance`,
-/// and the pair attaining it to `*out_pair` (`NULL` to skip). Mesh
-/// obstacles only (`MB_STATUS_QUERY_ERROR` in a scene with shapes or point
-/// clouds).
+/// and the pair attaining it to `*out_pair` (`NULL` to skip). Every
+/// obstacle kind: meshes, shapes and point clouds.
 ///
 /// **Thread safety**: as `mb_chain_scene_edge_is_free`.
 ///
@@ -1422,7 +1401,6 @@ pub unsafe extern "C" fn mb_chain_scene_clearance(
         let s = unsafe { handle_ref(scene, "scene") }?;
         // SAFETY: this function's contract.
         let q = unsafe { coordinates(s.scene.chain(), q, dof, false, "q") }?;
-        s.meshes_only("mb_chain_scene_clearance")?;
         if out_distance.is_null() {
             return Err(Failure::new(MbStatus::NullPointer, "out_distance is NULL"));
         }

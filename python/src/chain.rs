@@ -373,8 +373,9 @@ enum Made {
 /// Queries: `check_edge`, `edge_is_free` and `edges_are_free` (a planner's
 /// certified edge checks: every obstacle kind and every checked link pair);
 /// `check_segment`, `check_path`, `collides_at` and `clearance` (the first
-/// contact and the static check: mesh obstacles only, a `QueryError` in a
-/// scene with shape obstacles or point clouds). Every query releases the
+/// contact, the static check and the distance at a configuration), on every
+/// obstacle kind too: meshes, primitives, half-spaces and point clouds,
+/// mixed in one scene. Every query releases the
 /// GIL. Picklable (its chain as a URDF path, then what was added, replayed).
 #[pyclass(module = "motion_bound")]
 pub struct ChainScene {
@@ -491,24 +492,6 @@ impl ChainScene {
             self.chain().check_limits(&q, what)?;
         }
         Ok(q)
-    }
-
-    /// The first-contact queries take mesh obstacles only.
-    fn meshes_only(&self, query: &str) -> PyResult<()> {
-        if self.scene.shapes().is_empty() {
-            return Ok(());
-        }
-        let shapes: Vec<String> = self
-            .shape_owner
-            .iter()
-            .map(|&o| self.obstacle_name(o))
-            .collect();
-        Err(QueryError::new_err(format!(
-            "{query} takes scenes of mesh obstacles only; this one has shape obstacles and point \
-             clouds ({}): check_edge, edge_is_free and edges_are_free take every kind \
-             (check_edge(q, q) is the static check at q)",
-            shapes.join(", ")
-        )))
     }
 
     fn set(&mut self, p: ChainParams<f64>, name: &str) -> PyResult<()> {
@@ -709,8 +692,8 @@ impl ChainScene {
     /// Never checks again the pairs of links whose surfaces are within
     /// `distance` (default 0: touching) at configuration `q` (an SRDF's
     /// pairs in collision by default, fingers closed on each other), and
-    /// returns them as name pairs. Call it before adding shape obstacles or
-    /// point clouds (`QueryError` after).
+    /// returns them as name pairs (link pairs only: obstacles of any kind
+    /// stay checked).
     #[pyo3(signature = (q, distance = 0.0))]
     fn allow_collisions_at(
         &mut self,
@@ -720,12 +703,6 @@ impl ChainScene {
     ) -> PyResult<Vec<(String, String)>> {
         let q = self.chain().coordinates(q, "q")?;
         crate::errors::length_arg(distance, "distance")?;
-        if !self.scene.shapes().is_empty() {
-            return Err(QueryError::new_err(
-                "allow_collisions_at measures on scenes of mesh obstacles only: call it before \
-                 adding shape obstacles or point clouds (the pairs it allows are link pairs)",
-            ));
-        }
         let scene = &mut self.scene;
         let pairs = py
             .detach(|| scene.allow_collisions_at(&q, distance))
@@ -960,8 +937,8 @@ impl ChainScene {
         Ok(numpy::PyArray1::from_vec(py, out).into_any())
     }
 
-    /// The first contact along the joint-space segment `q0 -> q1` (mesh
-    /// obstacles only): a `SegmentReport` (`"contact"` with its `time`, never
+    /// The first contact along the joint-space segment `q0 -> q1` (every
+    /// obstacle kind): a `SegmentReport` (`"contact"` with its `time`, never
     /// later than the first touch, the pair and the witness points;
     /// `"separated"`; or `"iteration_limit"` with the time up to which the
     /// segment is certified free).
@@ -971,7 +948,6 @@ impl ChainScene {
         q0: &Bound<'_, PyAny>,
         q1: &Bound<'_, PyAny>,
     ) -> PyResult<SegmentReport> {
-        self.meshes_only("check_segment")?;
         let (a, b) = (self.end(q0, "q0")?, self.end(q1, "q1")?);
         let scene = &self.scene;
         let r = py
@@ -982,11 +958,10 @@ impl ChainScene {
 
     /// The first contact along a path of waypoints (an `(n, dof)` array, `n`
     /// at least 2), segment by segment, stopping at the first segment with a
-    /// contact or an undecided one (mesh obstacles only): a `SegmentReport`
+    /// contact or an undecided one (every obstacle kind): a `SegmentReport`
     /// whose `segment` is that segment's index (the last one when the whole
     /// path is separated) and whose `time` is along that segment.
     fn check_path(&self, py: Python<'_>, path: &Bound<'_, PyAny>) -> PyResult<SegmentReport> {
-        self.meshes_only("check_path")?;
         let (v, shape) = floats(path, "path")?;
         let dof = self.chain().chain.dof();
         if shape.len() != 2 || shape[1] != dof || shape[0] < 2 {
@@ -1023,14 +998,13 @@ impl ChainScene {
     }
 
     /// A certified lower bound of the smallest distance over the checked
-    /// pairs at `q` (mesh obstacles only), and that pair's names (`None`
+    /// pairs at `q` (every obstacle kind), and that pair's names (`None`
     /// when nothing is checked).
     fn clearance(
         &self,
         py: Python<'_>,
         q: &Bound<'_, PyAny>,
     ) -> PyResult<(f64, Option<(String, String)>)> {
-        self.meshes_only("clearance")?;
         let q = self.chain().coordinates(q, "q")?;
         let scene = &self.scene;
         let (d, pair) = py

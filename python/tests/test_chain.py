@@ -482,10 +482,9 @@ def test_bad_input_is_refused_naming_the_argument(panda, tmp_path):
     # The static check takes shapes too: touching there is never a free edge.
     if scene.collides_at(q):
         assert scene.check_edge(q, q).outcome != "free"
-    with pytest.raises(mb.QueryError, match="check_segment"):
-        scene.check_segment(q, q)
-    with pytest.raises(mb.QueryError, match="call it before adding shape obstacles"):
-        scene.allow_collisions_at(q)
+    # Every query takes every obstacle kind (issue 63).
+    assert scene.check_segment(q, q).outcome in ("contact", "separated", "iteration_limit")
+    assert isinstance(scene.allow_collisions_at(q), list)
     with pytest.raises(KeyError, match="no link named"):
         scene.allow_collision("panda_link99", 0)
     with pytest.raises(IndexError, match="b index out of range"):

@@ -260,8 +260,18 @@ static void test_queries_against_geometry(void) {
     OK(mb_chain_scene_check_segment(meshes, q0, back, 2, &r));
     CHECK(r.outcome == MB_SEGMENT_OUTCOME_SEPARATED && isnan(r.time),
           "separated: %d", (int)r.outcome);
-    FAILS(mb_chain_scene_check_segment(shapes, q0, q1, 2, &r),
-          MB_STATUS_QUERY_ERROR, "camera");
+    /* Every query takes every obstacle kind (issue 63): the first contact
+     * with the pole as a cuboid, never later than the first touch, and with
+     * the point cloud the other way. */
+    OK(mb_chain_scene_check_segment(shapes, q0, q1, 2, &r));
+    CHECK(r.outcome == MB_SEGMENT_OUTCOME_CONTACT && 1.5 * r.time <= latest &&
+              1.5 * r.time >= earliest - 0.05 && r.pair.b == 0 &&
+              r.distance <= contact + 1e-9,
+          "shapes: outcome %d angle %.6f pair %zu distance %g", (int)r.outcome,
+          1.5 * r.time, r.pair.b, r.distance);
+    OK(mb_chain_scene_check_segment(shapes, q0, back, 2, &r));
+    CHECK(r.outcome == MB_SEGMENT_OUTCOME_CONTACT && r.pair.b == 1,
+          "the cloud: outcome %d obstacle %zu", (int)r.outcome, r.pair.b);
 
     /* The static check and the clearance, against the closed form. */
     double through[2] = {M_PI / 4, 0.0};
@@ -279,8 +289,13 @@ static void test_queries_against_geometry(void) {
           "clearance %.6f, exact %.6f", d, exact);
     FAILS(mb_chain_scene_clearance(meshes, q0, 2, NULL, &p),
           MB_STATUS_NULL_POINTER, "out_distance");
-    FAILS(mb_chain_scene_clearance(shapes, q0, 2, &d, &p), MB_STATUS_QUERY_ERROR,
-          "clearance");
+    /* With shapes: never above the pole's distance (the cloud is nearer). */
+    OK(mb_chain_scene_clearance(shapes, q0, 2, &d, &p));
+    CHECK(d <= exact && d > 0.2 && p.kind == MB_CHAIN_PAIR_KIND_OBSTACLE,
+          "clearance with shapes %.6f, the pole's %.6f", d, exact);
+    size_t allowed = 9;
+    OK(mb_chain_scene_allow_collisions_at(shapes, q0, 2, 0.0, &allowed));
+    CHECK(allowed == 0, "no link pair touches: %zu", allowed);
 
     /* Bad configurations: each message names the argument and index. */
     double nan_q[2] = {0.0, NAN}, out_q[2] = {3.5, 0.0}, inf_q[2] = {INFINITY, 0};
