@@ -38,6 +38,13 @@ fn count(var: &str, default: usize) -> usize {
 /// The truth's sampling tolerance (world units).
 const TOL: f64 = 1e-4;
 
+/// How far below the true distance `clearance` may be: `REL` of it, or
+/// `ABS` (the certified gap deducts the forward kinematics' rounding bound,
+/// Lemma 13.3, about `1e-11` for the Panda's links, so that `1e-9` relative
+/// cannot hold below a centimetre).
+const REL: f64 = 1e-9;
+const ABS: f64 = 1e-10;
+
 /// Sides of the prisms about and in a cylinder (the truth's two bounds).
 const SIDES: u32 = 64;
 
@@ -234,6 +241,8 @@ struct Tally {
     worst_rel: f64,
     /// The truth's distance where `worst_rel` was seen.
     worst_at: f64,
+    /// The largest `truth - clearance` over configurations with `lo == hi`.
+    worst_abs: f64,
     collides_wrong: usize,
     ambiguous: usize,
     segments: usize,
@@ -245,6 +254,7 @@ struct Tally {
 }
 
 /// Runs the configurations and segments of one scene against its truth.
+#[allow(clippy::too_many_lines)]
 fn run(
     scene: &ChainScene<f64>,
     truth: &Truth,
@@ -274,7 +284,10 @@ fn run(
             if lo == hi && rel > t.worst_rel {
                 (t.worst_rel, t.worst_at) = (rel, lo);
             }
-            if c < lo * (1.0 - 1e-9) - 1e-12 {
+            if lo == hi {
+                t.worst_abs = t.worst_abs.max(lo - c);
+            }
+            if c < lo * (1.0 - REL) - ABS {
                 t.loose += 1;
                 eprintln!("clearance {c} below the truth's {lo} by {rel} ({pair:?})");
             }

@@ -36,7 +36,10 @@
 //!   the same typed errors, one answer from every entry point, and never
 //!   free (nor free until a later time) where one of 2,001 samples finds a
 //!   checked pair touching or within the padding, the shapes measured as
-//!   triangles inscribed in them.
+//!   triangles inscribed in them; on that scene `check_segment` and
+//!   `check_path` never late nor missed by the same samples, `clearance` at
+//!   `q0` never above the sampled truth's distance (issue 63: every query
+//!   takes shapes and point clouds).
 //!
 //! An axis whose squared length is subnormal (components below about
 //! `1e-154`) was normalised off unit length (the `AXIS` failure, fixed in
@@ -1520,16 +1523,26 @@ fn edges(
         );
     }
     scene.set_params(params).expect("valid parameters");
-    if scene.shapes().is_empty() {
-        // Without shapes the segment query is the other engine's.
-    } else {
-        assert!(
-            matches!(
-                scene.check_segment(q0, q1),
-                Err(ChainError::InvalidParameter(_))
-            ),
-            "check_segment with shapes"
-        );
+    // The first-contact and static queries take the shapes too (issue 63).
+    let segment = scene.check_segment(q0, q1);
+    assert_eq!(
+        segment.as_ref().err(),
+        expected.as_ref(),
+        "check_segment's error with shapes for {q0:?} -> {q1:?}"
+    );
+    let path = scene.check_path(&[q0.to_vec(), q1.to_vec()]);
+    assert_eq!(
+        path.as_ref().err(),
+        expected.as_ref(),
+        "check_path's error with shapes"
+    );
+    if let (Ok(segment), Ok(path)) = (&segment, &path) {
+        assert_eq!(segment.outcome, path.outcome, "check_path and check_segment with shapes");
+    }
+    let clearance = scene.clearance(q0);
+    let collides = scene.collides_at(q0);
+    if expected.is_none() {
+        assert!(clearance.is_ok() && collides.is_ok(), "clearance, collides_at with shapes");
     }
     let report = scene.check_edge(q0, q1);
     assert_eq!(
@@ -1596,6 +1609,35 @@ fn edges(
     };
     if !oracle {
         return;
+    }
+    // check_segment: never late, never missed (no touching sample before
+    // its time); the clearance at q0 never above the truth's distance.
+    if let Ok(segment) = &segment {
+        let until = match segment.outcome {
+            SegmentOutcome::Contact(c) => c.time,
+            SegmentOutcome::IterationLimit { time, .. } => time,
+            _ => f64::INFINITY,
+        };
+        for i in 0..=SAMPLES {
+            let t = i as f64 / SAMPLES as f64;
+            if t >= until {
+                break;
+            }
+            let (d, pair) = truth.min_distance(model, &Model::at(q0, q1, t), f64::MIN_POSITIVE);
+            assert!(
+                d >= f64::MIN_POSITIVE,
+                "SEGMENT LATE or MISSED with shapes: {pair:?} touches at t = {t}: {segment:?}; \
+                 shapes {:?}; q0 {q0:?}, q1 {q1:?}",
+                scene.shapes()
+            );
+        }
+    }
+    if let Ok((c, _)) = clearance {
+        let (d, pair) = truth.min_distance(model, &Model::at(q0, q1, 0.0), f64::INFINITY);
+        assert!(
+            c <= d * (1.0 + 1e-9) + 1e-12,
+            "CLEARANCE {c:e} above the truth's {d:e} ({pair:?}) with shapes; q0 {q0:?}"
+        );
     }
     let pad = params.padding;
     if let Some((at, pair @ (ChainPair::Obstacle { .. } | ChainPair::SelfCollision { .. }))) =

@@ -94,7 +94,7 @@ pub(super) fn broad_phase<T: Float>(
             let meet = match pair {
                 ChainPair::Obstacle { link, obstacle } => !apart_box(row[link], boxes[obstacle]),
                 ChainPair::SelfCollision { a, b } => !apart(row[a], row[b]),
-                // Not a pair of this query (shapes are the edge queries').
+                // Not a pair of this query (shape pairs go to the edge engine, `dispatch.rs`).
                 _ => true,
             };
             if meet {

@@ -9,7 +9,7 @@
 //! | what the link meets | first contact (`check_segment`) | distance at `q` (`clearance`) | edge queries, `collides_at` |
 //! |---|---|---|---|
 //! | a mesh obstacle, a link | conservative advancement (`advance.rs`, Lemma 13.4) | [`min_gap`] (`gap.rs`) | [`Target::Mesh`], [`Target::Link`] (`edge.rs`) |
-//! | a convex primitive, a half-space | the edge engine, depth first in time (Lemma 13.5) | [`shape_min_gap`] (Lemma 13.15) | [`Target::Shape`] |
+//! | a convex primitive, a half-space | the edge engine, depth first in time (Lemma 13.5) | [`shape_min_gap`] (Lemma 13.14) | [`Target::Shape`] |
 //! | a point cloud | the edge engine, depth first in time | [`shape_min_gap`] over the cloud's tree | [`Target::Cloud`] |
 //!
 //! A link against a shape is measured by [`Against`] (`shapes.rs`): the
@@ -119,7 +119,7 @@ fn against_of<T: Float>(o: &ShapeObstacle<T>) -> Option<Against<'_, T>> {
 }
 
 /// The smallest certified gap between link tree `ta` placed by `a` and the
-/// shape obstacle `o` (Lemma 13.15): branch and bound over the link's tree
+/// shape obstacle `o` (Lemma 13.14): branch and bound over the link's tree
 /// (and a cloud's), a node pruned when its certified ball gap is at least
 /// the best leaf gap found (or `cap`); a leaf measured by [`Against`]'s
 /// certified slab gap along GJK's direction (a closed form for a plane or a

@@ -35,13 +35,18 @@
 //! ([`Obstacle`]) or shapes ([`ShapeObstacle`]: convex primitives,
 //! half-spaces, point clouds), never meshed.
 //!
-//! [`ChainScene`] holds a chain and still [`Obstacle`]s; its
-//! [`check_segment`](ChainScene::check_segment) runs conservative
-//! advancement per pair (after a broad phase of swept balls per
-//! sub-interval, [`ChainStats`]) and reports the first contact's time, pair
-//! and witnesses, never later than the first touch, or
+//! [`ChainScene`] holds a chain and still obstacles of every kind, mixed:
+//! meshes ([`Obstacle`]) and shapes ([`ShapeObstacle`]), and every query
+//! takes them all. Its [`check_segment`](ChainScene::check_segment) runs
+//! conservative advancement per pair of meshes and links (after a broad
+//! phase of swept balls per sub-interval, [`ChainStats`]) and the edge
+//! engine for the shapes, and reports the first contact's time, pair and
+//! witnesses, never later than the first touch, or
 //! [`SegmentOutcome::Separated`]; [`check_path`](ChainScene::check_path)
-//! goes segment by segment.
+//! goes segment by segment; [`clearance`](ChainScene::clearance) and
+//! [`collides_at`](ChainScene::collides_at) answer at one configuration.
+//! Which engine serves a pair's kinds is decided in one place
+//! (`chain/dispatch.rs`, `docs/architecture.md`).
 //!
 //! ```
 //! use motion_bound::chain::{ChainBuilder, ChainScene, JointKind, JointSpec, Obstacle, SegmentOutcome};

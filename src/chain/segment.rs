@@ -107,7 +107,7 @@ impl<'a, T: Float> Segment<'a, T> {
                 work.fill(self.chain, &mut a, la, skip, dt);
                 work.fill(self.chain, &mut b, lb, skip, dt);
             }
-            // Shapes are the edge queries' (`edge.rs`), never a pair here.
+            // A shape's side is its own (`dispatch.rs`): the link's motion only.
             ChainPair::Shape { link, .. } => {
                 work.fill(self.chain, &mut a, link, 0, dt);
                 b.terms.clear();
@@ -132,6 +132,7 @@ impl<'a, T: Float> Segment<'a, T> {
                 Some((&a.whole, &b.whole))
             }
             ChainPair::SelfCollision { a, b } => Some((&tree(a)?.whole, &tree(b)?.whole)),
+            // A shape has no hierarchy (`dispatch::shape_min_gap` takes it).
             ChainPair::Shape { .. } => None,
         }
     }

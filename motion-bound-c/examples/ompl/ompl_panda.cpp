@@ -63,18 +63,26 @@ std::array<double, DOF> q_of(const ob::State *s) {
     return q;
 }
 
-// The static check every validator shares: nothing within the contact
-// distance at q (mb_chain_scene_check_edge from q to q).
+// The static check every validator shares: no checked pair's surfaces meet
+// at q (mb_chain_scene_collides_at, every obstacle kind), and the certified
+// clearance there (mb_chain_scene_clearance) for clearance objectives.
 class Valid : public ob::StateValidityChecker {
   public:
     Valid(const ob::SpaceInformationPtr &si, const mb_chain_scene *scene)
         : ob::StateValidityChecker(si), scene_(scene) {}
     bool isValid(const ob::State *s) const override {
         auto q = q_of(s);
-        mb_edge_report r;
-        return mb_chain_scene_check_edge(scene_, q.data(), q.data(), DOF, &r) ==
+        uint8_t collides = 1;
+        return mb_chain_scene_collides_at(scene_, q.data(), DOF, &collides) ==
                    MB_STATUS_OK &&
-               r.outcome == MB_EDGE_OUTCOME_FREE;
+               collides == 0;
+    }
+    double clearance(const ob::State *s) const override {
+        auto q = q_of(s);
+        double d = 0.0;
+        if (mb_chain_scene_clearance(scene_, q.data(), DOF, &d, nullptr) != MB_STATUS_OK)
+            return 0.0;
+        return d > 0.0 ? d : 0.0;
     }
 
   private:
