@@ -27,6 +27,10 @@ use serde_json::Value;
 type Error = Box<dyn std::error::Error>;
 type V3 = [f64; 3];
 type M3 = [[f64; 3]; 3];
+/// A scene and its truth's shapes (`(lower, upper)` each).
+type WithTruth = (ChainScene<f64>, Vec<(TruthShape, TruthShape)>);
+/// What adds one obstacle to a scene.
+type Adder = Box<dyn Fn(&mut ChainScene<f64>)>;
 
 fn count(var: &str, default: usize) -> usize {
     std::env::var(var)
@@ -137,7 +141,7 @@ fn add_cuboid(
 
 /// The Panda in MotionBenchMaker's scene `name` (cuboids and cylinders as
 /// shapes), and the truth's shapes.
-fn mbm(name: &str) -> Result<(ChainScene<f64>, Vec<(TruthShape, TruthShape)>), Error> {
+fn mbm(name: &str) -> Result<WithTruth, Error> {
     let (mut scene, _) = bare_arm_scene(Arm::Panda)?;
     let path = format!(
         "{}/data/mbm/{name}.json",
@@ -174,7 +178,7 @@ fn mbm(name: &str) -> Result<(ChainScene<f64>, Vec<(TruthShape, TruthShape)>), E
 /// The Panda among every kind at once: a cuboid and a cylinder (shapes),
 /// a mesh obstacle (a box's triangles), a floor (a half-space) and a point
 /// cloud of 150 balls, placed by `seed`.
-fn mixed(seed: u64) -> Result<(ChainScene<f64>, Vec<(TruthShape, TruthShape)>), Error> {
+fn mixed(seed: u64) -> Result<WithTruth, Error> {
     let (mut scene, _) = bare_arm_scene(Arm::Panda)?;
     let mut rng = Rng::new(seed);
     let mut truth = Vec::new();
@@ -414,7 +418,7 @@ fn every_query_takes_every_obstacle_kind() {
     )
     .expect("bar");
     let at = Pose::from_translation(Vec3::new(0.5, 0.5, 0.0));
-    let kinds: Vec<(&str, Box<dyn Fn(&mut ChainScene<f64>)>)> = vec![
+    let kinds: Vec<(&str, Adder)> = vec![
         (
             "mesh",
             Box::new(move |s| {
@@ -523,12 +527,9 @@ fn every_query_takes_every_obstacle_kind() {
     }
 }
 
-fn shape(
-    c: Result<Convex<'static, f64>, motion_bound::InputError>,
-    at: Pose<f64>,
-) -> Box<dyn Fn(&mut ChainScene<f64>)> {
+fn shape(c: Result<Convex<'static, f64>, motion_bound::InputError>, at: Pose<f64>) -> Adder {
     let c = c.expect("shape");
     Box::new(move |s| {
-        s.add_shape(ShapeObstacle::try_new("shape", c.clone(), at).expect("shape"));
+        s.add_shape(ShapeObstacle::try_new("shape", c, at).expect("shape"));
     })
 }

@@ -13,9 +13,7 @@ use crate::chain::model::{Chain, ChainError};
 use crate::chain::obstacle::Obstacle;
 use crate::chain::params::ChainParams;
 use crate::chain::rake::{Rake, RakeModel, RakeWork, RAKE_MIN_BUDGET};
-use crate::chain::report::{
-    ChainPair, ChainStats, PathReport, SegmentOutcome, SegmentReport,
-};
+use crate::chain::report::{ChainPair, ChainStats, PathReport, SegmentOutcome, SegmentReport};
 use crate::chain::segment::{Segment, Work};
 use crate::chain::shapes::ShapeObstacle;
 use crate::geometry::gjk::ConvexPolytope;
@@ -570,7 +568,6 @@ impl<T: Float> ChainScene<T> {
             q1,
         }
     }
-
 }
 
 /// Checks many edges of one scene ([`ChainScene::edge_checker`]), reusing
