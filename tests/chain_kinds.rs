@@ -533,3 +533,178 @@ fn shape(c: Result<Convex<'static, f64>, motion_bound::InputError>, at: Pose<f64
         s.add_shape(ShapeObstacle::try_new("shape", c, at).expect("shape"));
     })
 }
+
+/// `x` rounded to `f32` and back.
+fn r32(x: f64) -> f64 {
+    f64::from(x as f32)
+}
+
+/// The Panda in `f32` among a cuboid, a cylinder, a floor, a point cloud
+/// and a mesh board (every number `f32`-exact), its `f64` twin of exactly
+/// the same numbers for the truth, and the truth's shapes.
+fn mixed_f32(seed: u64) -> Result<(ChainScene<f32>, WithTruth), Error> {
+    let (bare, _) = bare_arm_scene(Arm::Panda)?;
+    let (c32, c64) = arm_scene::chain_in_f32(bare.chain());
+    let (mut s32, mut s64) = (ChainScene::new(c32), ChainScene::new(c64));
+    let n = bare.chain().link_count();
+    for a in 0..n {
+        for b in a + 1..n {
+            let has = |l: usize| bare.chain().link_mesh(l).is_some();
+            if has(a) && has(b) && !bare.checks_pair(a, b) {
+                s32.allow_collision(a, b);
+                s64.allow_collision(a, b);
+            }
+        }
+    }
+    let mut rng = Rng::new(seed);
+    let mut truth = Vec::new();
+    let at = |rng: &mut Rng, z: f64| {
+        let a = rng.range(-3.1, 3.1);
+        let d = rng.range(0.35, 0.65);
+        [r32(d * a.cos()), r32(d * a.sin()), r32(z)]
+    };
+    let p32 = |p: V3| Pose::<f32>::from_translation(Vec3::from_array(p.map(|x| x as f32)));
+    let p64 = |p: V3| Pose::<f64>::from_translation(Vec3::from_array(p));
+    // A cuboid.
+    let (h, c) = ([r32(0.08), r32(0.12), r32(0.3)], at(&mut rng, 0.3));
+    s32.add_shape(ShapeObstacle::try_new(
+        "box",
+        Convex::try_cuboid(h.map(|x| x as f32))?,
+        p32(c),
+    )?);
+    let mesh = bodies::cuboid::<f64>(h.map(|x| 2.0 * x))?;
+    let t = TruthShape::polytope(&corners(&mesh), &place(&p64(c)));
+    truth.push((t.clone(), t));
+    // A cylinder along z (ours along y: turned, exactly).
+    let (r, hl, c) = (r32(0.04), r32(0.4), at(&mut rng, 0.4));
+    let turned = Pose::<f32> {
+        rotation: [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]],
+        ..p32(c)
+    };
+    s32.add_shape(ShapeObstacle::try_new(
+        "pole",
+        Convex::try_cylinder(hl as f32, r as f32)?,
+        turned,
+    )?);
+    truth.push(cylinder_truth(r, hl, &place(&p64(c)))?);
+    // The floor.
+    let below = [0.0, 0.0, r32(-0.02)];
+    s32.add_shape(ShapeObstacle::try_half_space(
+        "floor",
+        [0.0, 0.0, 1.0],
+        below.map(|x| x as f32),
+    )?);
+    let floor = TruthShape::Plane {
+        n: [0.0, 0.0, 1.0],
+        p: below,
+    };
+    truth.push((floor.clone(), floor));
+    // A cloud.
+    let c = at(&mut rng, 0.5);
+    let points: Vec<V3> = (0..150)
+        .map(|_| {
+            [0, 1, 2].map(|k| r32(c[k] + rng.range(-0.1, 0.1) * if k == 2 { 2.0 } else { 1.0 }))
+        })
+        .collect();
+    let r = r32(0.01);
+    let p32s: Vec<[f32; 3]> = points.iter().map(|p| p.map(|x| x as f32)).collect();
+    s32.add_shape(ShapeObstacle::try_points("cloud", &p32s, r as f32)?);
+    let cloud = TruthShape::Points { points, r };
+    truth.push((cloud.clone(), cloud));
+    // A mesh board, in both scenes (the truth reads the twin's meshes).
+    let board = bodies::cuboid::<f32>([0.3, 0.2, 0.02])?;
+    let c = at(&mut rng, 0.45);
+    s64.add_obstacle(Obstacle::try_new(
+        "board",
+        board.try_convert::<f64>()?,
+        p64(c),
+    )?);
+    s32.add_obstacle(Obstacle::try_new("board", board, p32(c))?);
+    Ok((s32, (s64, truth)))
+}
+
+/// The mixed scene in `f32` against the truth on its exact `f64` twin:
+/// the clearance never above the truth's distance (and within `5e-4` of it:
+/// the `f32` forward kinematics' certified placement margins, Lemma 13.3,
+/// are a few `1e-5` of the arm's reach per link, both links' for a self
+/// pair), `collides_at` exact away from the
+/// `f32` rounding band, `check_segment` never late nor missed.
+#[test]
+fn mixed_scenes_in_f32_against_the_truth() {
+    let (configs, segments) = (
+        count("CHAIN_KINDS_CONFIGS", 200),
+        count("CHAIN_KINDS_SEGMENTS", 40),
+    );
+    let (s32, (s64, shapes)) = mixed_f32(7).expect("scene");
+    let truth = Truth::new(&s64).with_shapes(shapes);
+    let limits = joint_limits(s64.chain());
+    let mut rng = Rng::new(6363);
+    let (mut above, mut loose, mut wrong, mut missed, mut late, mut contacts, mut touches) =
+        (0, 0, 0, 0, 0, 0, 0);
+    let mut worst = 0.0f64;
+    let to32 = |q: &[f64]| -> Vec<f32> { q.iter().map(|&x| x as f32).collect() };
+    let to64 = |q: &[f32]| -> Vec<f64> { q.iter().map(|&x| f64::from(x)).collect() };
+    for _ in 0..configs {
+        let q = to32(&random_q(&mut rng, &limits));
+        let (lo, hi, pair) = truth.min_distance_exact(&to64(&q));
+        let c = f64::from(s32.clearance(&q).expect("clearance").0);
+        if c > hi {
+            above += 1;
+            eprintln!("f32 clearance {c} above the truth's {hi} ({pair:?})");
+        }
+        if lo == hi && lo > 0.0 {
+            worst = worst.max(lo - c);
+        }
+        if lo > 0.0 && c < lo - 5e-4 {
+            loose += 1;
+            eprintln!("f32 clearance {c} below the truth's {lo} ({pair:?})");
+        }
+        let collides = s32.collides_at(&q).expect("collides_at");
+        // Touching taken on a computed distance, or on no certified gap
+        // past the `f32` margins (a tie within rounding: touching).
+        if hi <= 0.0 && !collides || lo > 5e-4 && collides {
+            wrong += 1;
+            eprintln!(
+                "f32 collides_at {collides}, the truth's [{lo}, {hi}] ({pair:?}), clearance {c}"
+            );
+        }
+    }
+    let mut range = |a: f64, b: f64| rng.range(a, b);
+    for _ in 0..segments {
+        let (q0, q1) = panda_edge(&mut range, &limits);
+        let (q0, q1) = (to32(&q0), to32(&q1));
+        let report = s32.check_segment(&q0, &q1).expect("check_segment");
+        let found = match report.outcome {
+            SegmentOutcome::Contact(c) => {
+                contacts += 1;
+                Some(f64::from(c.time))
+            }
+            SegmentOutcome::IterationLimit { time, .. } => Some(f64::from(time)),
+            _ => None,
+        };
+        if let Some((touch, _, pair)) = truth.sample(&to64(&q0), &to64(&q1), TOL).touch {
+            touches += 1;
+            match found {
+                None => {
+                    missed += 1;
+                    eprintln!("f32 missed {pair:?} at {touch}");
+                }
+                Some(t) if t > touch => {
+                    late += 1;
+                    eprintln!("f32 late {t} after {touch} ({pair:?})");
+                }
+                Some(_) => {}
+            }
+        }
+    }
+    println!(
+        "f32 mixed: configs {configs}, above {above}, loose {loose} (worst deficit {worst:e}), collides_at wrong {wrong}; \
+         segments {segments}, contacts {contacts}, truth touches {touches}, missed {missed}, late {late}"
+    );
+    assert_eq!(
+        (above, loose, wrong, missed, late),
+        (0, 0, 0, 0, 0),
+        "f32 against the truth"
+    );
+    assert!(contacts > 0 && touches > 0, "no contact exercised");
+}
