@@ -901,7 +901,7 @@ fn main() {
         }
         if resting {
             println!(
-                "world {}: ms per step no-ccd {:.4} (ours / no-ccd {:.3})",
+                "resting {}: ms per step no-ccd {:.4} (ours / no-ccd {:.3})",
                 world.name(),
                 1e3 * n_secs / d.steps.max(1) as f64,
                 o_secs / n_secs
