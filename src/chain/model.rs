@@ -7,6 +7,7 @@ use alloc::vec::Vec;
 use core::fmt;
 
 use crate::geometry::gjk::ConvexPolytope;
+use crate::geometry::hull_clusters::{cluster_vertices, HullCluster};
 use crate::geometry::hull_vertices::hull_vertex_indices;
 use crate::math::pose::mat_mul;
 use crate::{BallTree, Float, Pose, TriMesh, Vec3};
@@ -335,7 +336,7 @@ impl<T: Float> ChainBuilder<T> {
                 .map_or(T::ZERO, |t: &BallTree<T>| t.whole.reach);
             // The distinct vertices reduced to a superset of the hull's
             // vertices (Lemma 13.7, item 5): the same hull, fewer supports.
-            let hull = mesh.as_ref().map_or_else(Vec::new, |m| {
+            let mut hull = mesh.as_ref().map_or_else(Vec::new, |m| {
                 let all = distinct(m.vertices());
                 hull_vertex_indices(&all)
                     .into_iter()
@@ -345,11 +346,14 @@ impl<T: Float> ChainBuilder<T> {
             let hull_rho = ConvexPolytope::try_new(&hull, Pose::IDENTITY)
                 .ok()
                 .map(|p| p.radius_l1());
+            // The support skips clusters that cannot hold its vertex.
+            let hull_clusters = cluster_vertices(&mut hull);
             links.push(LinkData {
                 name,
                 mesh,
                 tree,
                 hull,
+                hull_clusters,
                 hull_rho,
                 parent_joint: parent_joint[l],
                 path,
@@ -388,6 +392,9 @@ pub(crate) struct LinkData<T> {
     /// the hull of the others: their convex hull holds every triangle, the
     /// cover of `proofs/13-chains.md`, Lemma 13.7.
     pub(crate) hull: Vec<[T; 3]>,
+    /// The hull's vertices' clusters, for its support (`hull` is in their
+    /// order).
+    pub(crate) hull_clusters: Vec<HullCluster<T>>,
     /// The hull's bound of its vertices' 1-norms, from
     /// [`ConvexPolytope::try_new`] at build (`None`: no geometry, or a vertex
     /// GJK refuses; the edge query then descends the tree alone).

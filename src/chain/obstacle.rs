@@ -8,6 +8,7 @@ use alloc::vec::Vec;
 use crate::chain::model::{distinct, ChainError};
 use crate::chain::proxy::Proxy;
 use crate::geometry::gjk::ConvexPolytope;
+use crate::geometry::hull_clusters::{cluster_vertices, HullCluster};
 use crate::geometry::hull_vertices::hull_vertex_indices;
 use crate::rounding::gamma;
 use crate::{BallTree, Float, Pose, TriMesh, Vec3};
@@ -55,6 +56,9 @@ pub struct Obstacle<T> {
     /// hull's vertices, in its own frame: its first cover against a link's
     /// hull (`proofs/13-chains.md`, Lemma 13.8).
     pub(super) hull: Vec<[T; 3]>,
+    /// The hull's vertices' clusters, for its support (`hull` is in their
+    /// order).
+    pub(super) hull_clusters: Vec<HullCluster<T>>,
     /// The hull's bound of its vertices' 1-norms (`None`: a vertex GJK
     /// refuses; the query then descends the tree alone).
     pub(super) hull_rho: Option<T>,
@@ -89,13 +93,14 @@ impl<T: Float> Obstacle<T> {
         let delta = gamma::<T>(8) * reach + T::from_u32(4) * T::ETA_NORMAL;
         // The same hull with fewer supports (Lemma 13.7, item 5).
         let all = distinct(mesh.vertices());
-        let hull: Vec<[T; 3]> = hull_vertex_indices(&all)
+        let mut hull: Vec<[T; 3]> = hull_vertex_indices(&all)
             .into_iter()
             .map(|i| all[i])
             .collect();
         let hull_rho = ConvexPolytope::try_new(&hull, Pose::IDENTITY)
             .ok()
             .map(|p| p.radius_l1());
+        let hull_clusters = cluster_vertices(&mut hull);
         let pose64 = Pose {
             rotation: pose.rotation.map(|r| r.map(T::to_f64)),
             translation: Vec3::from_array(pose.translation.to_array().map(T::to_f64)),
@@ -126,6 +131,7 @@ impl<T: Float> Obstacle<T> {
             reach: reach + delta,
             delta,
             hull,
+            hull_clusters,
             hull_rho,
         })
     }

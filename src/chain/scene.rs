@@ -364,6 +364,7 @@ impl<T: Float> ChainScene<T> {
             .map(|l| {
                 l.hull_rho
                     .and_then(|rho| ConvexPolytope::with_radius(&l.hull, rho, Pose::IDENTITY).ok())
+                    .map(|p| p.with_clusters(&l.hull_clusters))
             })
             .collect();
         // Each mesh obstacle's hull, placed by its pose once (Lemma 13.8).
@@ -373,6 +374,7 @@ impl<T: Float> ChainScene<T> {
             .map(|o| {
                 o.hull_rho
                     .and_then(|rho| ConvexPolytope::with_radius(&o.hull, rho, o.pose).ok())
+                    .map(|p| p.with_clusters(&o.hull_clusters))
             })
             .collect();
         EdgeChecker {

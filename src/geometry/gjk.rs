@@ -17,6 +17,7 @@ use crate::error::{check_components, InputError, Quantity};
 use crate::rounding::{polytope_radius_up, polytope_support_slack, separation_down};
 use crate::{Direction, Float, Point3, Pose, Vec3};
 
+use super::hull_clusters::{clustered_support, HullCluster};
 use super::simplex::nearest;
 
 /// A convex body given by its support map.
@@ -108,6 +109,8 @@ impl<T: Float, S: SupportMap<T> + ?Sized> SupportMap<T> for &S {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ConvexPolytope<'a, T> {
     vertices: &'a [[T; 3]],
+    /// Clusters of the vertices (empty: the support scans them all).
+    clusters: &'a [HullCluster<T>],
     pose: Pose<T>,
     rho: T,
     slack: T,
@@ -141,7 +144,9 @@ impl<'a, T: Float> ConvexPolytope<'a, T> {
     /// [`InputError::NonFinite`] / [`InputError::TooLarge`] with
     /// [`Quantity::Pose`].
     pub fn with_pose(&self, pose: Pose<T>) -> Result<Self, InputError> {
-        Self::placed(self.vertices, self.rho, pose)
+        let mut placed = Self::placed(self.vertices, self.rho, pose)?;
+        placed.clusters = self.clusters;
+        Ok(placed)
     }
 
     /// The bound `rho` of the vertices' 1-norms, for
@@ -175,10 +180,29 @@ impl<'a, T: Float> ConvexPolytope<'a, T> {
         let slack = polytope_support_slack(m, rho, x);
         Ok(Self {
             vertices,
+            clusters: &[],
             pose,
             rho,
             slack,
         })
+    }
+
+    /// The same polytope whose support scans `clusters` of its vertices
+    /// (made by `hull_clusters::cluster_vertices` over exactly these
+    /// vertices, in this order) and skips those that cannot hold the
+    /// largest dot product (`proofs/floating-point.md`, "Clustered
+    /// support"). Clusters that do not cover the vertices are ignored.
+    #[cfg(feature = "alloc")]
+    #[must_use]
+    pub(crate) fn with_clusters(mut self, clusters: &'a [HullCluster<T>]) -> Self {
+        let covers = clusters.first().is_some_and(|c| c.start == 0)
+            && clusters.last().map(|c| c.end as usize) == Some(self.vertices.len())
+            && clusters.windows(2).all(|w| w[0].end == w[1].start)
+            && clusters.iter().all(|c| c.start < c.end);
+        if covers {
+            self.clusters = clusters;
+        }
+        self
     }
 
     /// The body-frame vertices.
@@ -199,6 +223,13 @@ impl<'a, T: Float> ConvexPolytope<'a, T> {
 impl<T: Float> SupportMap<T> for ConvexPolytope<'_, T> {
     fn support(&self, dir: Vec3<T>) -> Point3<T> {
         let d = self.pose.inverse_transform_vector(dir);
+        if !self.clusters.is_empty() {
+            let i = clustered_support(self.vertices, self.clusters, d);
+            return Point3::from_vec3(
+                self.pose
+                    .transform_point(Vec3::from_array(self.vertices[i])),
+            );
+        }
         let dot = |r: &[T; 3]| Vec3::from_array(*r).dot(d);
         // A vertex of the largest computed dot product (which one among ties
         // does not matter: `slack` bounds every vertex's rounding), found in

@@ -13,6 +13,8 @@
 
 pub(crate) mod closest;
 pub(crate) mod gjk;
+// The polytope support's vertex clusters (built with `alloc`).
+pub(crate) mod hull_clusters;
 // A point set's hull vertices (a superset), for the chains' link hulls.
 #[cfg(feature = "alloc")]
 pub(crate) mod hull_vertices;
