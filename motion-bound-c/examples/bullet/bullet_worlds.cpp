@@ -58,6 +58,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <map>
 #include <utility>
@@ -396,6 +397,17 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
         return k;
     };
     auto link = [&](size_t a, size_t b) { group[root(a)] = root(b); };
+    // Each body's origin segment's box (from Bullet's floats, exact in
+    // double): the largest gap between two boxes along an axis is at most
+    // the segments' least distance, so a pair whose boxes are farther apart
+    // than the test below needs is apart without the closed form.
+    std::vector<std::array<double, 6>> span(n);
+    for (size_t k = 0; k < n; k++)
+        for (int a = 0; a < 3; a++) {
+            double x = double(before[k].getOrigin()[a]), y = double(after[k].getOrigin()[a]);
+            span[k][a] = std::min(x, y);
+            span[k][3 + a] = std::max(x, y);
+        }
     for (size_t i = 0; i < n; i++) {
         if (!w.bodies[i].dynamic) continue;
         for (size_t j = 0; j < n; j++) {
@@ -406,9 +418,13 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
             // segments' least distance in closed form (in double, from
             // Bullet's exact floats; the margin covers its roundings).
             if (w.bodies[j].dynamic) {
+                double need = w.bodies[i].reach + w.bodies[j].reach + p.contact_distance;
+                double gap = 0;
+                for (int a = 0; a < 3; a++)
+                    gap = std::max({gap, span[j][a] - span[i][3 + a], span[i][a] - span[j][3 + a]});
+                if (gap > need * (1 + 1e-9) + 1e-9) continue;
                 double least = segment_distance(before[i].getOrigin(), after[i].getOrigin(),
                                                 before[j].getOrigin(), after[j].getOrigin());
-                double need = w.bodies[i].reach + w.bodies[j].reach + p.contact_distance;
                 if (least > need * (1 + 1e-9) + 1e-9) continue;
                 // Examined: the two stop together (below).
                 link(i, j);
