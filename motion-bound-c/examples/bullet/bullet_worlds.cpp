@@ -168,6 +168,9 @@ struct World {
         mb_ceiling ceiling;
     };
     std::map<std::pair<size_t, size_t>, Touching> touching;
+    // The pass's scratch kept between steps: each body's origin segment's
+    // box (lows, then highs).
+    std::vector<std::array<double, 6>> span;
 
     World() { world.setGravity(btVector3(0, 0, 0)); }
     ~World() {
@@ -401,7 +404,8 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
     // double): the largest gap between two boxes along an axis is at most
     // the segments' least distance, so a pair whose boxes are farther apart
     // than the test below needs is apart without the closed form.
-    std::vector<std::array<double, 6>> span(n);
+    std::vector<std::array<double, 6>> &span = w.span;
+    span.resize(n);
     for (size_t k = 0; k < n; k++)
         for (int a = 0; a < 3; a++) {
             double x = double(before[k].getOrigin()[a]), y = double(after[k].getOrigin()[a]);
