@@ -403,7 +403,8 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
     // Each body's origin segment's box (from Bullet's floats, exact in
     // double): the largest gap between two boxes along an axis is at most
     // the segments' least distance, so a pair whose boxes are farther apart
-    // than the test below needs is apart without the closed form.
+    // than the test below needs is apart without the closed form (each gap
+    // is one rounded difference, far inside that test's margin).
     std::vector<std::array<double, 6>> &span = w.span;
     span.resize(n);
     for (size_t k = 0; k < n; k++)
