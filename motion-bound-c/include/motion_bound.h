@@ -1760,7 +1760,9 @@ enum mb_status mb_shape_free(struct mb_shape *shape);
  * As `mb_motion_between_about` (the motion with constant velocities from
  * the pose `start` at `t = 0` to `end` at `t = duration`, turning about the
  * body point `local_centre` by the shortest rotation), written by value to
- * `*out`: no handle, nothing to free.
+ * `*out`: no handle, nothing to free. A query makes the motion again from
+ * the fields (its quaternion normalised again): the same motion up to that
+ * rounding, and exactly the one it certifies.
  *
  * `MB_STATUS_INVALID_INPUT` for a NaN or infinite component, a zero
  * quaternion or `duration <= 0`; `MB_STATUS_NULL_POINTER` for
@@ -1794,7 +1796,8 @@ enum mb_status mb_motion_value_between(struct mb_pose start,
 /**
  * `mb_time_of_impact` with motions by value (`motion_a`, `motion_b` point
  * to `mb_motion_value`s, over the same `duration`): the same report, bit
- * for bit, as for handles of the same motions. Errors as
+ * for bit, as `mb_time_of_impact` with the handles `mb_motion_about_centre`
+ * makes of the same fields. Errors as
  * `mb_time_of_impact`, and `MB_STATUS_NULL_POINTER` for a `NULL` motion,
  * `MB_STATUS_INVALID_INPUT` for a motion value that is not one (named).
  *
@@ -1814,7 +1817,8 @@ enum mb_status mb_time_of_impact_values(const struct mb_shape *shape_a,
 
 /**
  * `mb_past_contact_below` with motions by value: the same answer, bit for
- * bit, as for handles of the same motions. Errors as
+ * bit, as `mb_past_contact_below` with the handles `mb_motion_about_centre`
+ * makes of the same fields. Errors as
  * `mb_past_contact_below`, and `MB_STATUS_NULL_POINTER` for a `NULL`
  * motion, `MB_STATUS_INVALID_INPUT` for a motion value that is not one.
  *
