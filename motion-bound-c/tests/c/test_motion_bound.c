@@ -1212,6 +1212,15 @@ static void test_motion_values(void) {
               below.time >= lo * (1 - 1e-9) && below.time <= hi * (1 + 1e-9),
           "pressed by value: outcome %d time %g not in [%g, %g]", (int)below.outcome, below.time,
           lo, hi);
+    /* Turned an eighth about x, its centre h sqrt(2) + gap above the plate:
+     * its lowest edge is gap above it (the value's rotation is used). */
+    double c8 = cos(M_PI / 8), s8 = sin(M_PI / 8);
+    mb_motion_value turned = {{0.3, -0.2, hc * sqrt(2.0) + gap}, ZERO, {c8, s8, 0, 0},
+                              {6e-3, 0, -6e-3}, ZERO, dt};
+    OK(mb_past_contact_below_values(cube, &turned, plate, &still, v3(0, 0, -1), NULL, 0.0, &pc,
+                                    &below));
+    CHECK(below.outcome == MB_PAST_OUTCOME_NEVER && fabs(below.overlap + gap) < 1e-9,
+          "turned by value: outcome %d overlap %g", (int)below.outcome, below.overlap);
     mb_motion *hp = handle_of(press), *hs = handle_of(still);
     mb_ceiling last = {0.2e-3, 1};
     for (int k = 0; k < 2; k++) {
