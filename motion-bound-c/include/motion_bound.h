@@ -784,6 +784,49 @@ typedef struct mb_scene_pair {
   struct mb_report report;
 } mb_scene_pair;
 
+/**
+ * A rigid motion over `[0, duration]` by value: the body turns about its
+ * body point `local_centre` (its centre of mass, or `{0, 0, 0}` for its
+ * origin), that point at the world position `centre` at `t = 0` and moving
+ * at `linear`, the body at the orientation `rotation` at `t = 0` and
+ * turning at `angular` (world vectors, radians per unit time):
+ * `p(t) = centre + linear t + R(angular t) rotation (r - local_centre)`,
+ * exactly the motion `mb_motion_about_centre` makes a handle of.
+ *
+ * A plain struct the caller owns: fill it directly, or with
+ * `mb_motion_value_between` / `mb_motion_value_between_about`; nothing to
+ * free. Each query that takes one checks it (`MB_STATUS_INVALID_INPUT`
+ * for a NaN or infinite component, a zero quaternion, `duration <= 0`,
+ * the message naming the field: `motion_a.linear.y`).
+ */
+typedef struct mb_motion_value {
+  /**
+   * The world position of the point the body turns about, at `t = 0`.
+   */
+  struct mb_vec3 centre;
+  /**
+   * That point in the body's frame.
+   */
+  struct mb_vec3 local_centre;
+  /**
+   * The body's orientation at `t = 0` (any finite nonzero quaternion; it
+   * is normalised).
+   */
+  struct mb_quat rotation;
+  /**
+   * The linear velocity of `centre`.
+   */
+  struct mb_vec3 linear;
+  /**
+   * The angular velocity (world axis times radians per unit time).
+   */
+  struct mb_vec3 angular;
+  /**
+   * The interval's length (positive).
+   */
+  double duration;
+} mb_motion_value;
+
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
@@ -1712,6 +1755,89 @@ enum mb_status mb_shape_get_kind(const struct mb_shape *shape, enum mb_shape_kin
  * As stated: `shape` is not in use elsewhere.
  */
 enum mb_status mb_shape_free(struct mb_shape *shape);
+
+/**
+ * As `mb_motion_between_about` (the motion with constant velocities from
+ * the pose `start` at `t = 0` to `end` at `t = duration`, turning about the
+ * body point `local_centre` by the shortest rotation), written by value to
+ * `*out`: no handle, nothing to free. A query makes the motion again from
+ * the fields (its quaternion normalised again): the same motion up to that
+ * rounding, and exactly the one it certifies.
+ *
+ * `MB_STATUS_INVALID_INPUT` for a NaN or infinite component, a zero
+ * quaternion or `duration <= 0`; `MB_STATUS_NULL_POINTER` for
+ * `out == NULL`.
+ *
+ * **Thread safety**: any thread.
+ *
+ * # Safety
+ * `out` is `NULL` or valid for writing an `mb_motion_value`.
+ */
+enum mb_status mb_motion_value_between_about(struct mb_pose start,
+                                             struct mb_pose end,
+                                             double duration,
+                                             struct mb_vec3 local_centre,
+                                             struct mb_motion_value *out);
+
+/**
+ * As `mb_motion_between` (turning about the body origin), by value: the
+ * value of `mb_motion_value_between_about` with `local_centre` zero.
+ *
+ * **Thread safety**: any thread.
+ *
+ * # Safety
+ * `out` is `NULL` or valid for writing an `mb_motion_value`.
+ */
+enum mb_status mb_motion_value_between(struct mb_pose start,
+                                       struct mb_pose end,
+                                       double duration,
+                                       struct mb_motion_value *out);
+
+/**
+ * `mb_time_of_impact` with motions by value (`motion_a`, `motion_b` point
+ * to `mb_motion_value`s, over the same `duration`): the same report, bit
+ * for bit, as `mb_time_of_impact` with the handles `mb_motion_about_centre`
+ * makes of the same fields. Errors as
+ * `mb_time_of_impact`, and `MB_STATUS_NULL_POINTER` for a `NULL` motion,
+ * `MB_STATUS_INVALID_INPUT` for a motion value that is not one (named).
+ *
+ * **Thread safety**: any thread; everything read may be shared.
+ *
+ * # Safety
+ * The shape handles are not freed during the call; `motion_a`, `motion_b`
+ * and `params` are `NULL` or valid for reading; `out` is `NULL` or valid
+ * for writing an `mb_report`.
+ */
+enum mb_status mb_time_of_impact_values(const struct mb_shape *shape_a,
+                                        const struct mb_motion_value *motion_a,
+                                        const struct mb_shape *shape_b,
+                                        const struct mb_motion_value *motion_b,
+                                        const struct mb_params *params,
+                                        struct mb_report *out);
+
+/**
+ * `mb_past_contact_below` with motions by value: the same answer, bit for
+ * bit, as `mb_past_contact_below` with the handles `mb_motion_about_centre`
+ * makes of the same fields. Errors as
+ * `mb_past_contact_below`, and `MB_STATUS_NULL_POINTER` for a `NULL`
+ * motion, `MB_STATUS_INVALID_INPUT` for a motion value that is not one.
+ *
+ * **Thread safety**: any thread; everything read may be shared.
+ *
+ * # Safety
+ * The shape handles are not freed during the call; `motion_a`,
+ * `motion_b`, `last` and `params` are `NULL` or valid for reading; `out`
+ * is `NULL` or valid for writing an `mb_below_report`.
+ */
+enum mb_status mb_past_contact_below_values(const struct mb_shape *shape_a,
+                                            const struct mb_motion_value *motion_a,
+                                            const struct mb_shape *shape_b,
+                                            const struct mb_motion_value *motion_b,
+                                            struct mb_vec3 normal,
+                                            const struct mb_ceiling *last,
+                                            double floor,
+                                            const struct mb_params *params,
+                                            struct mb_below_report *out);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -40,6 +40,7 @@ mod ptr;
 mod query;
 mod scene;
 mod shape;
+mod value;
 
 pub use chain::{
     mb_chain_dof, mb_chain_free, mb_chain_from_urdf_file, mb_chain_from_urdf_string,
@@ -70,4 +71,8 @@ pub use shape::{
     mb_shape_ball, mb_shape_capsule, mb_shape_compound, mb_shape_cone, mb_shape_convex_hull,
     mb_shape_cuboid, mb_shape_cylinder, mb_shape_free, mb_shape_get_kind, mb_shape_half_space,
     mb_shape_mesh, mb_shape_rounded, MbMeshSolidity, MbShape, MbShapeKind,
+};
+pub use value::{
+    mb_motion_value_between, mb_motion_value_between_about, mb_past_contact_below_values,
+    mb_time_of_impact_values, MbMotionValue,
 };

@@ -1,9 +1,8 @@
 //! The pair query: parameters, report, `mb_time_of_impact`.
 
 use motion_bound::ca::{
-    past_contact, past_contact_below, time_of_impact, AnyPair, BoundChoice, CaError, CaOutcome,
-    CaParams, CaReport, Ceiling, ContactCriterion, MeshWorkspace, OwnedShape, PastContact,
-    WitnessSearch, Work,
+    past_contact, time_of_impact, AnyPair, BoundChoice, CaError, CaOutcome, CaParams, CaReport,
+    ContactCriterion, MeshWorkspace, OwnedShape, PastContact, WitnessSearch, Work,
 };
 use motion_bound::{RigidMotion, Vec3};
 use rayon::prelude::*;
@@ -518,7 +517,12 @@ pub unsafe extern "C" fn mb_past_contact(
                 read_in(params, "params")?,
             )
         };
-        let answer = touching_rule((sa, ma, sb, mb), normal, p, past_contact)?;
+        let answer = touching_rule(
+            (&sa.data, &ma.motion, &sb.data, &mb.motion),
+            normal,
+            p,
+            past_contact,
+        )?;
         let report = match answer {
             PastContact::Never => MbPastReport {
                 outcome: MbPastOutcome::Never,
@@ -541,8 +545,13 @@ pub unsafe extern "C" fn mb_past_contact(
 /// What `mb_past_contact` and `mb_past_contact_below` share once their
 /// handles are read: the normal checked (zero or non-finite: named), the
 /// parameters, both shapes prepared, and `rule` run with its error named.
-fn touching_rule<R>(
-    (sa, ma, sb, mb): (&MbShape, &MbMotion, &MbShape, &MbMotion),
+pub(crate) fn touching_rule<R>(
+    (sa, ma, sb, mb): (
+        &OwnedShape<f64>,
+        &RigidMotion<f64>,
+        &OwnedShape<f64>,
+        &RigidMotion<f64>,
+    ),
     normal: MbVec3,
     p: Option<MbParams>,
     rule: impl FnOnce(
@@ -562,12 +571,12 @@ fn touching_rule<R>(
         ));
     }
     let p = self::params(p)?;
-    let (pa, pb) = (sa.data.prepare(), sb.data.prepare());
+    let (pa, pb) = (sa.prepare(), sb.prepare());
     let (pa, pb) = (
         pa.map_err(|e| pair_failure(e.into(), ""))?,
         pb.map_err(|e| pair_failure(e.into(), ""))?,
     );
-    rule(pa.shape(), &ma.motion, pb.shape(), &mb.motion, n, &p).map_err(|e| match e {
+    rule(pa.shape(), ma, pb.shape(), mb, n, &p).map_err(|e| match e {
         CaError::Input(e) => Failure::new(MbStatus::InvalidInput, format!("normal: {e}")),
         e => pair_failure(e, ""),
     })
@@ -664,28 +673,13 @@ pub unsafe extern "C" fn mb_past_contact_below(
                 read_in(params, "params")?,
             )
         };
-        let last = last.map(|c| Ceiling {
-            value: c.value,
-            held: c.held != 0,
-        });
-        let below = touching_rule((sa, ma, sb, mb), normal, p, |a, ma, b, mb, n, p| {
-            past_contact_below(a, ma, b, mb, n, last, floor, p)
-        })?;
-        let (outcome, time) = match below.answer {
-            PastContact::Never => (MbPastOutcome::Never, f64::NAN),
-            PastContact::At(t) => (MbPastOutcome::At, t),
-            _ => (MbPastOutcome::Undecided, f64::NAN),
-        };
-        let report = MbBelowReport {
-            outcome,
-            time,
-            overlap: below.overlap,
-            ceiling: MbCeiling {
-                value: below.ceiling.value,
-                held: u32::from(below.ceiling.held),
-            },
-            cast: u32::from(below.cast),
-        };
+        let report = crate::value::below_report(
+            (&sa.data, &ma.motion, &sb.data, &mb.motion),
+            normal,
+            last,
+            floor,
+            p,
+        )?;
         // SAFETY: `out` is NULL or writable (this function's contract).
         unsafe { write_out(out, report, "out") }
     })

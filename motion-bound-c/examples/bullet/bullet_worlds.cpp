@@ -11,15 +11,16 @@
 //   setCcdSweptSphereRadius: a sphere swept along the translation);
 // - ours: the same, and after each step the certified pass: each dynamic
 //   body's actual motion over the step (its pose before and after
-//   stepSimulation, as a constant-velocity motion: mb_motion_between) cast
-//   against every other body with mb_time_of_impact, unless certified apart
+//   stepSimulation, as a constant-velocity motion by value:
+//   mb_motion_value_between) cast against every other body with
+//   mb_time_of_impact_values, unless certified apart
 //   first (the segments its origin and the other's sweep, grown by their
 //   reaches: apart wherever either stops; a fixed body by its box), and the
 //   bodies moved back to their poses on those motions at the earliest time
 //   of impact of their group (the dynamic bodies of the pairs examined stop
 //   together). A pair within the contact distance at the start (a body
 //   stopped there by the last step, or resting on the other) asks
-//   mb_past_contact_below along the report's normal (proofs/12-shapes.md,
+//   mb_past_contact_below_values along the report's normal (proofs/12-shapes.md,
 //   Lemma 12.14): its overlap along that normal may reach a ceiling (the
 //   start's plus the contact distance, or the floor, the checker's
 //   tolerance, when that is more), and the pair is stopped at the first
@@ -57,6 +58,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <map>
 #include <utility>
@@ -77,6 +79,10 @@ namespace {
 constexpr double DT = 1.0 / 60.0;
 constexpr int STEPS = 150;
 constexpr double TOL = 0.01;
+// The environment read once (getenv scans it: per pair it cost the pass
+// about as much as a closed-form check).
+const bool DEBUG = std::getenv("BULLET_WORLDS_DEBUG") != nullptr;
+const bool NO_CHECK = std::getenv("BULLET_WORLDS_NO_CHECK") != nullptr;
 
 void check(mb_status s, const char *what) {
     if (s != MB_STATUS_OK) {
@@ -162,6 +168,9 @@ struct World {
         mb_ceiling ceiling;
     };
     std::map<std::pair<size_t, size_t>, Touching> touching;
+    // The pass's scratch kept between steps: each body's origin segment's
+    // box (lows, then highs).
+    std::vector<std::array<double, 6>> span;
 
     World() { world.setGravity(btVector3(0, 0, 0)); }
     ~World() {
@@ -365,17 +374,19 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
     const double floor = TOL;
     size_t n = w.bodies.size();
     std::vector<btTransform> after(n);
-    std::vector<mb_motion *> motion(n, nullptr);
+    // Each body's motion by value (mb_motion_value: no handle, nothing to
+    // free); a fixed body's is its pose with no velocity.
+    std::vector<mb_motion_value> motion(n);
     std::vector<double> stop(n, DT);
     for (size_t i = 0; i < n; i++) {
         after[i] = w.bodies[i].rb->getWorldTransform();
-        if (w.bodies[i].dynamic)
-            check(mb_motion_between(to_pose(before[i]), to_pose(after[i]), DT, &motion[i]),
+        if (w.bodies[i].dynamic) {
+            check(mb_motion_value_between(to_pose(before[i]), to_pose(after[i]), DT, &motion[i]),
                   "motion");
-        else
-            check(mb_motion_from_velocities(to_pose(before[i]), {0, 0, 0}, {0, 0, 0}, DT,
-                                            &motion[i]),
-                  "still");
+        } else {
+            mb_pose at = to_pose(before[i]);
+            motion[i] = {at.translation, {0, 0, 0}, at.rotation, {0, 0, 0}, {0, 0, 0}, DT};
+        }
     }
     std::map<std::pair<size_t, size_t>, World::Touching> touching_next;
     // Dynamic bodies of pairs examined (not apart by their segments) stop
@@ -389,6 +400,19 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
         return k;
     };
     auto link = [&](size_t a, size_t b) { group[root(a)] = root(b); };
+    // Each body's origin segment's box (from Bullet's floats, exact in
+    // double): the largest gap between two boxes along an axis is at most
+    // the segments' least distance, so a pair whose boxes are farther apart
+    // than the test below needs is apart without the closed form (each gap
+    // is one rounded difference, far inside that test's margin).
+    std::vector<std::array<double, 6>> &span = w.span;
+    span.resize(n);
+    for (size_t k = 0; k < n; k++)
+        for (int a = 0; a < 3; a++) {
+            double x = double(before[k].getOrigin()[a]), y = double(after[k].getOrigin()[a]);
+            span[k][a] = std::min(x, y);
+            span[k][3 + a] = std::max(x, y);
+        }
     for (size_t i = 0; i < n; i++) {
         if (!w.bodies[i].dynamic) continue;
         for (size_t j = 0; j < n; j++) {
@@ -399,9 +423,13 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
             // segments' least distance in closed form (in double, from
             // Bullet's exact floats; the margin covers its roundings).
             if (w.bodies[j].dynamic) {
+                double need = w.bodies[i].reach + w.bodies[j].reach + p.contact_distance;
+                double gap = 0;
+                for (int a = 0; a < 3; a++)
+                    gap = std::max({gap, span[j][a] - span[i][3 + a], span[i][a] - span[j][3 + a]});
+                if (gap > need * (1 + 1e-9) + 1e-9) continue;
                 double least = segment_distance(before[i].getOrigin(), after[i].getOrigin(),
                                                 before[j].getOrigin(), after[j].getOrigin());
-                double need = w.bodies[i].reach + w.bodies[j].reach + p.contact_distance;
                 if (least > need * (1 + 1e-9) + 1e-9) continue;
                 // Examined: the two stop together (below).
                 link(i, j);
@@ -430,11 +458,11 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
             if (carried != w.touching.end()) {
                 last = &carried->second.ceiling;
                 mb_below_report &below = carried_below;
-                check(mb_past_contact_below(w.bodies[i].ours, motion[i], w.bodies[j].ours,
-                                            motion[j], carried->second.normal, last, floor, &p,
+                check(mb_past_contact_below_values(w.bodies[i].ours, &motion[i], w.bodies[j].ours,
+                                                   &motion[j], carried->second.normal, last, floor, &p,
                                             &below),
                       "past contact below");
-                if (std::getenv("BULLET_WORLDS_DEBUG"))
+                if (DEBUG)
                     std::fprintf(stderr,
                                  "carried (%zu, %zu): outcome %d time %g overlap %g ceiling %g "
                                  "held %u cast %u\n",
@@ -446,10 +474,10 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
                 }
             }
             mb_report r;
-            check(mb_time_of_impact(w.bodies[i].ours, motion[i], w.bodies[j].ours, motion[j], &p,
-                                    &r),
+            check(mb_time_of_impact_values(w.bodies[i].ours, &motion[i], w.bodies[j].ours, &motion[j],
+                                           &p, &r),
                   "time of impact");
-            if (std::getenv("BULLET_WORLDS_DEBUG"))
+            if (DEBUG)
                 std::fprintf(stderr, "cast (%zu, %zu): outcome %d time %g distance %g normal (%g %g %g)\n",
                              i, j, int(r.outcome), r.time, r.distance, r.normal.x, r.normal.y,
                              r.normal.z);
@@ -469,10 +497,10 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
                 mb_vec3 normal = carried_here ? carried->second.normal : r.normal;
                 mb_below_report below = carried_below;
                 if (!carried_here)
-                    check(mb_past_contact_below(w.bodies[i].ours, motion[i], w.bodies[j].ours,
-                                                motion[j], normal, last, floor, &p, &below),
+                    check(mb_past_contact_below_values(w.bodies[i].ours, &motion[i],
+                                                       w.bodies[j].ours, &motion[j], normal, last, floor, &p, &below),
                           "past contact below");
-                if (std::getenv("BULLET_WORLDS_DEBUG"))
+                if (DEBUG)
                     std::fprintf(stderr, "  past contact: outcome %d time %g\n",
                                  int(below.outcome), below.time);
                 if (below.outcome != MB_PAST_OUTCOME_UNDECIDED)
@@ -491,8 +519,8 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
                 // and out within the step is still found.
                 mb_params closer = p;
                 closer.contact_distance = 0.5 * r.distance;
-                check(mb_time_of_impact(w.bodies[i].ours, motion[i], w.bodies[j].ours,
-                                        motion[j], &closer, &r),
+                check(mb_time_of_impact_values(w.bodies[i].ours, &motion[i], w.bodies[j].ours,
+                                               &motion[j], &closer, &r),
                       "time of impact");
                 if (r.outcome == MB_OUTCOME_SEPARATED) continue;
                 t = r.time;
@@ -522,7 +550,6 @@ int certified_pass(World &w, const std::vector<btTransform> &before, const mb_pa
             w.bodies[i].rb->setInterpolationWorldTransform(t);
             w.bodies[i].rb->getMotionState()->setWorldTransform(t);
         }
-        mb_motion_free(motion[i]);
     }
     return held;
 }
@@ -578,7 +605,7 @@ Verdict judge(World &w, const std::vector<btTransform> &before, const std::vecto
             }
             if (crossed || (d_start <= TOL && d_end <= TOL && d_max > TOL)) {
                 v.tunnelled = true;
-                if (std::getenv("BULLET_WORLDS_DEBUG"))
+                if (DEBUG)
                     std::fprintf(stderr,
                                  "tunnelled: pair (%zu, %zu) crossed %d depth start %g end %g max %g "
                                  "centre (%g %g %g) -> (%g %g %g)\n",
@@ -587,7 +614,7 @@ Verdict judge(World &w, const std::vector<btTransform> &before, const std::vecto
             }
             else if (d_end > TOL) {
                 v.late = true;
-                if (std::getenv("BULLET_WORLDS_DEBUG"))
+                if (DEBUG)
                     std::fprintf(stderr, "late: pair (%zu, %zu) depth start %g end %g\n", i, j,
                                  d_start, d_end);
             }
@@ -607,7 +634,7 @@ Tally run(const std::string &name, int launches, bool ours) {
     Tally t;
     mb_params p = mb_params_default();
     p.contact_distance = 1e-3;
-    if (std::getenv("BULLET_WORLDS_DEBUG"))
+    if (DEBUG)
         std::fprintf(stderr, "run %s, %s\n", name.c_str(), ours ? "ours" : "bullet");
     for (int launch = 0; launch < launches; launch++) {
         Rng rng(1000 * (unsigned long long)(launch + 1) + name.size());
@@ -626,9 +653,9 @@ Tally run(const std::string &name, int launches, bool ours) {
             t.steps++;
             for (size_t i = 0; i < n; i++) after[i] = w.bodies[i].rb->getWorldTransform();
             // BULLET_WORLDS_NO_CHECK=1: no checker (for instruction counts).
-            if (std::getenv("BULLET_WORLDS_NO_CHECK")) continue;
+            if (NO_CHECK) continue;
             Verdict v = judge(w, before, after);
-            if (v.tunnelled && ours && std::getenv("BULLET_WORLDS_DEBUG"))
+            if (v.tunnelled && ours && DEBUG)
                 std::fprintf(stderr, "  %s launch %d step %d\n", name.c_str(), launch, s);
             tunnelled = tunnelled || v.tunnelled;
             late = late || v.late;

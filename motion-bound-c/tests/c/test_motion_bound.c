@@ -1123,6 +1123,158 @@ static void test_past_contact_below(void) {
     mb_shape_free(cube);
 }
 
+/* The handle of the motion a value stands for (mb_motion_about_centre of its
+ * fields), to read its points and to compare the value entry points with the
+ * handle ones. */
+static mb_motion *handle_of(mb_motion_value v) {
+    mb_motion *m = NULL;
+    OK(mb_motion_about_centre(v.centre, v.local_centre, v.rotation, v.linear, v.angular,
+                              v.duration, &m));
+    return m;
+}
+
+static int same_below(mb_below_report a, mb_below_report b) {
+    return a.outcome == b.outcome && same(a.time, b.time) && same(a.overlap, b.overlap) && a.ceiling.value == b.ceiling.value &&
+           a.ceiling.held == b.ceiling.held && a.cast == b.cast;
+}
+
+/* Motions by value (mb_motion_value: no handle): the value between two poses
+ * against the closed form (the quarter turn of test_motions); the queries by
+ * value answer as the handle ones on the same motion, and as the closed forms
+ * (balls head-on, a cube resting on and pressed into the plate); bad values
+ * are named by field. */
+static void test_motion_values(void) {
+    double h = sqrt(0.5);
+    mb_pose start = at(0, 0, 0), end = {{2, 0, 0}, {h, 0, 0, h}};
+    mb_motion_value v;
+    OK(mb_motion_value_between(start, end, 0.5, &v));
+    CHECK(fabs(v.linear.x - 4) < 1e-12 && fabs(v.linear.y) < 1e-12 && fabs(v.linear.z) < 1e-12 &&
+              fabs(v.angular.z - M_PI) < 1e-12 && fabs(v.angular.x) < 1e-12 &&
+              fabs(v.angular.y) < 1e-12 && v.duration == 0.5 && v.centre.x == 0 &&
+              v.local_centre.x == 0 && v.rotation.w == 1,
+          "between: linear (%g %g %g) angular (%g %g %g) duration %g", v.linear.x, v.linear.y,
+          v.linear.z, v.angular.x, v.angular.y, v.angular.z, v.duration);
+    mb_motion *m = handle_of(v);
+    mb_vec3 p;
+    OK(mb_motion_point_at(m, v3(1, 0, 0), 0.5, &p));
+    CHECK(fabs(p.x - 2) < 1e-12 && fabs(p.y - 1) < 1e-12 && fabs(p.z) < 1e-12,
+          "value's end point (%g %g %g)", p.x, p.y, p.z);
+    OK(mb_motion_free(m));
+    /* About the body point (1, 0, 0): that point moves on the straight line
+     * from (1, 0, 0) to (2, 1, 0); the body origin ends at (2, 0, 0). */
+    OK(mb_motion_value_between_about(start, end, 0.5, v3(1, 0, 0), &v));
+    CHECK(fabs(v.centre.x - 1) < 1e-12 && fabs(v.linear.x - 2) < 1e-12 &&
+              fabs(v.linear.y - 2) < 1e-12 && v.local_centre.x == 1,
+          "between about: centre %g linear (%g %g)", v.centre.x, v.linear.x, v.linear.y);
+    m = handle_of(v);
+    OK(mb_motion_point_at(m, v3(0, 0, 0), 0.5, &p));
+    CHECK(fabs(p.x - 2) < 1e-12 && fabs(p.y) < 1e-12, "origin at the end (%g %g)", p.x, p.y);
+    OK(mb_motion_free(m));
+
+    /* Balls of radius 0.5 head-on from x = -2 and 2 at 1 each: the gap 3
+     * closes at 2 (test_balls_head_on). */
+    mb_shape *ball = NULL;
+    OK(mb_shape_ball(0.5, &ball));
+    mb_motion_value va = {{-2, 0, 0}, ZERO, IDENTITY, {1, 0, 0}, ZERO, 2.0};
+    mb_motion_value vb = {{2, 0, 0}, ZERO, IDENTITY, {-1, 0, 0}, ZERO, 2.0};
+    mb_params pr = mb_params_default();
+    mb_report r, rh;
+    OK(mb_time_of_impact_values(ball, &va, ball, &vb, &pr, &r));
+    expect_linear("balls by value", r, 3.0, 2.0, pr.contact_distance);
+    mb_motion *ha = handle_of(va), *hb = handle_of(vb);
+    rh = toi(ball, ha, ball, hb, &pr);
+    CHECK(same_report(r, rh), "by value t = %.17g, by handle %.17g", r.time, rh.time);
+    OK(mb_motion_free(ha));
+    OK(mb_motion_free(hb));
+
+    /* The cube resting on the plate and pressed into it
+     * (test_past_contact_below), by value. */
+    const double d = 1e-3, gap = 0.5e-3, hc = 0.1, dt = 1.0 / 60.0;
+    mb_params pc = mb_params_default();
+    pc.contact_distance = d;
+    mb_shape *cube = cube_mesh(hc, MB_MESH_SOLIDITY_AUTO);
+    mb_shape *plate = plate_mesh();
+    mb_motion_value still = {ZERO, ZERO, IDENTITY, ZERO, ZERO, dt};
+    mb_motion_value rest = {{0.3, -0.2, hc + gap}, ZERO, IDENTITY, {6e-3, 0, -6e-3}, ZERO, dt};
+    mb_motion_value press = {{0.3, -0.2, hc + gap}, ZERO, IDENTITY, {0, 0, -1}, ZERO, dt};
+    mb_below_report below, below_h;
+    OK(mb_past_contact_below_values(cube, &rest, plate, &still, v3(0, 0, -1), NULL, 0.0, &pc,
+                                    &below));
+    CHECK(below.outcome == MB_PAST_OUTCOME_NEVER && below.cast == 0 &&
+              fabs(below.ceiling.value - d) < 1e-9 && fabs(below.overlap + gap) < 1e-9,
+          "resting by value: outcome %d cast %u ceiling %g overlap %g", (int)below.outcome,
+          below.cast, below.ceiling.value, below.overlap);
+    OK(mb_past_contact_below_values(cube, &press, plate, &still, v3(0, 0, -1), NULL, 0.0, &pc,
+                                    &below));
+    double delta = fmin(d, 0.5 * (d + gap));
+    double lo = gap + d - delta, hi = gap + d - 0.5 * delta;
+    CHECK(below.outcome == MB_PAST_OUTCOME_AT && below.cast != 0 && below.ceiling.held != 0 &&
+              below.time >= lo * (1 - 1e-9) && below.time <= hi * (1 + 1e-9),
+          "pressed by value: outcome %d time %g not in [%g, %g]", (int)below.outcome, below.time,
+          lo, hi);
+    /* Turned an eighth about x, its centre h sqrt(2) + gap above the plate:
+     * its lowest edge is gap above it (the value's rotation is used). */
+    double c8 = cos(M_PI / 8), s8 = sin(M_PI / 8);
+    mb_motion_value turned = {{0.3, -0.2, hc * sqrt(2.0) + gap}, ZERO, {c8, s8, 0, 0},
+                              {6e-3, 0, -6e-3}, ZERO, dt};
+    OK(mb_past_contact_below_values(cube, &turned, plate, &still, v3(0, 0, -1), NULL, 0.0, &pc,
+                                    &below));
+    CHECK(below.outcome == MB_PAST_OUTCOME_NEVER && fabs(below.overlap + gap) < 1e-9,
+          "turned by value: outcome %d overlap %g", (int)below.outcome, below.overlap);
+    mb_motion *hp = handle_of(press), *hs = handle_of(still);
+    mb_ceiling last = {0.2e-3, 1};
+    for (int k = 0; k < 2; k++) {
+        const mb_ceiling *l = k ? &last : NULL;
+        OK(mb_past_contact_below_values(cube, &press, plate, &still, v3(0, 0, -1), l, 0.0, &pc,
+                                        &below));
+        OK(mb_past_contact_below(cube, hp, plate, hs, v3(0, 0, -1), l, 0.0, &pc, &below_h));
+        CHECK(same_below(below, below_h), "ceiling %d: by value t = %g, by handle %g", k,
+              below.time, below_h.time);
+    }
+    OK(mb_motion_free(hp));
+    OK(mb_motion_free(hs));
+
+    /* Bad values and pointers, named; nothing written. */
+    mb_motion_value bad = press;
+    bad.linear.y = NAN;
+    memset(&r, 0, sizeof r);
+    mb_report before_r = r;
+    FAILS(mb_time_of_impact_values(cube, &press, plate, &bad, &pc, &r), MB_STATUS_INVALID_INPUT,
+          "motion_b.linear.y is not finite (got NaN)");
+    CHECK(memcmp(&r, &before_r, sizeof r) == 0, "the report was written on failure");
+    bad = press;
+    bad.rotation = (mb_quat){0, 0, 0, 0};
+    FAILS(mb_past_contact_below_values(cube, &bad, plate, &still, v3(0, 0, -1), NULL, 0.0, &pc,
+                                       &below),
+          MB_STATUS_INVALID_INPUT, "motion_a.rotation: quaternion has zero length");
+    bad = press;
+    bad.duration = 0;
+    FAILS(mb_time_of_impact_values(cube, &bad, plate, &still, &pc, &r), MB_STATUS_INVALID_INPUT,
+          "motion_a.duration must be positive and finite (got 0)");
+    bad = still;
+    bad.duration = 2 * dt;
+    FAILS(mb_time_of_impact_values(cube, &press, plate, &bad, &pc, &r), MB_STATUS_QUERY_ERROR,
+          "motion_a, motion_b");
+    FAILS(mb_time_of_impact_values(cube, NULL, plate, &still, &pc, &r), MB_STATUS_NULL_POINTER,
+          "motion_a is NULL");
+    FAILS(mb_past_contact_below_values(cube, &press, plate, NULL, v3(0, 0, -1), NULL, 0.0, &pc,
+                                       &below),
+          MB_STATUS_NULL_POINTER, "motion_b is NULL");
+    FAILS(mb_past_contact_below_values(cube, &press, plate, &still, ZERO, NULL, 0.0, &pc, &below),
+          MB_STATUS_INVALID_INPUT, "normal: the zero vector");
+    FAILS(mb_past_contact_below_values(cube, &press, plate, &still, v3(0, 0, -1), NULL, 0.0, &pc,
+                                       NULL),
+          MB_STATUS_NULL_POINTER, "out is NULL");
+    FAILS(mb_motion_value_between(start, end, 0.0, &v), MB_STATUS_INVALID_INPUT,
+          "duration must be positive and finite (got 0)");
+    FAILS(mb_motion_value_between_about(start, end, 0.5, v3(0, NAN, 0), &v),
+          MB_STATUS_INVALID_INPUT, "local_centre.y is not finite (got NaN)");
+    FAILS(mb_motion_value_between(start, end, 0.5, NULL), MB_STATUS_NULL_POINTER, "out is NULL");
+    mb_shape_free(plate);
+    mb_shape_free(cube);
+    mb_shape_free(ball);
+}
+
 int main(void) {
     CHECK(strcmp(mb_last_error_message(), "") == 0, "a message before any failure");
     test_version_and_params();
@@ -1138,6 +1290,7 @@ int main(void) {
     test_batch();
     test_past_contact();
     test_past_contact_below();
+    test_motion_values();
     if (failures) {
         fprintf(stderr, "%d of %d checks FAILED\n", failures, checks);
         return 1;
