@@ -274,10 +274,13 @@ compile_error!("motion-bound needs either the `std` or the `libm` feature for it
 mod bound;
 #[cfg(feature = "alloc")]
 mod bvh;
+// Without the oracle (`reference`), only a chain's clearance uses it.
 pub mod ca;
 #[cfg(feature = "alloc")]
 #[cfg_attr(docsrs, doc(cfg(feature = "alloc")))]
 pub mod chain;
+#[cfg_attr(not(feature = "reference"), allow(dead_code, unreachable_pub))]
+mod dd;
 mod error;
 mod features;
 mod float;

@@ -8,7 +8,7 @@
 //! | layer | modules |
 //! |---|---|
 //! | 0 | `float` (the float trait), `rng` (the test support's seeded generator) |
-//! | 1 | `error` (input errors), `rounding` (directed rounding, error bounds) |
+//! | 1 | `error` (input errors), `rounding` (directed rounding, error bounds), `dd` (double-double numbers) |
 //! | 2 | `math` (vectors, points, directions, rotations, placements) |
 //! | 3 | `motion` (rigid motion, interval, swept arc) |
 //! | 4 | `shape` (vertex sets, bounding balls, convex shapes, half-spaces) |
@@ -44,11 +44,12 @@ use std::collections::BTreeMap;
 use std::fs;
 use std::path::{Path, PathBuf};
 
-const LAYERS: [(&str, u32); 20] = [
+const LAYERS: [(&str, u32); 21] = [
     ("float", 0),
     ("rng", 0),
     ("error", 1),
     ("rounding", 1),
+    ("dd", 1),
     ("math", 2),
     ("motion", 3),
     ("shape", 4),

@@ -20,7 +20,34 @@
 //! (exact widening of `f32` inputs) or, for `f64` inputs, a higher precision.
 //! Nothing here calls the bound code.
 
-pub mod dd;
+pub mod dd {
+    //! Double-double arithmetic (the crate's `dd` module, where its
+    //! algorithms and error bounds are documented): the reference evaluated
+    //! in about 106 bits.
+    //!
+    //! Note that [`DoubleDouble`] implements both [`Real`](super::Real) and
+    //! the `core::ops` operators: with `Real` in scope, call the trait's
+    //! methods in path form (`Real::mul(a, b)`) or use the operators
+    //! (`a * b`), as `a.mul(b)` is ambiguous.
+    //!
+    //! ```
+    //! use motion_bound::reference::{dd::DoubleDouble, Real};
+    //!
+    //! let pi = DoubleDouble::PI;
+    //! // sin(pi/6) = 1/2 to about 2^-106.
+    //! let half = (pi / 6.0).sin();
+    //! assert!((half - 0.5).abs().to_f64() < 1e-31);
+    //! // 4 atan2(1, 1) = pi, far beyond f64.
+    //! let q = DoubleDouble::from_f64(1.0).atan2(DoubleDouble::from_f64(1.0)) * 4.0;
+    //! assert!((q - pi).abs().to_f64() < 1e-31);
+    //! // The `Real` trait, as the oracle uses it.
+    //! let two = <DoubleDouble as Real>::from_f64(2.0);
+    //! let r = Real::sqrt(two);
+    //! assert!((r * r - two).abs().to_f64() < 1e-31);
+    //! ```
+
+    pub use crate::dd::{quick_two_sum, two_prod, two_sum, DoubleDouble};
+}
 mod real;
 #[cfg(feature = "faer")]
 pub mod sampled;

@@ -1,12 +1,15 @@
-//! Double-double arithmetic: the reference evaluated in about 106 bits.
+//! Double-double arithmetic: about 106 bits from two `f64`.
 //!
 //! A [`DoubleDouble`] is an unevaluated sum `hi + lo` of two `f64` with
 //! `hi = RN(hi + lo)`, so `|lo| <= ulp(hi) / 2`. Writing `u = 2^-53` for the
 //! unit roundoff of `f64`, it carries about `2 * 53 = 106` significant bits;
-//! below, `u^2 = 2^-106 ~ 1.23e-32`. It exists so that the oracle in
-//! [`super`] can be evaluated well beyond `f64` and an `f64` bound checked
-//! *strictly* against it: an error of a few `u^2` cannot hide a violation of
-//! an `f64` bound, whose own granularity is `u`.
+//! below, `u^2 = 2^-106 ~ 1.23e-32`. It serves two users: the oracle
+//! (`reference`, the test support, which re-exports this module as
+//! `reference::dd`), evaluated well beyond `f64` so that an `f64` bound is
+//! checked *strictly* against it (an error of a few `u^2` cannot hide a
+//! violation of an `f64` bound, whose own granularity is `u`); and a chain's
+//! clearance, whose nearest pair's links are re-placed in it
+//! (`chain/refine.rs`, `proofs/13-chains.md`, Lemma 13.16).
 //!
 //! # Algorithms
 //!
@@ -85,31 +88,13 @@
 //! * Non-finite arguments give NaN. Nothing panics and every loop is bounded
 //!   (at most 4 reduction passes, 64 series terms, 3 Newton steps).
 //!
-//! Note that [`DoubleDouble`] implements both [`Real`] and the `core::ops`
-//! operators: with `Real` in scope, call the trait's methods in path form
-//! (`Real::mul(a, b)`) or use the operators (`a * b`), as `a.mul(b)` is
-//! ambiguous.
-//!
-//! ```
-//! use motion_bound::reference::{dd::DoubleDouble, Real};
-//!
-//! let pi = DoubleDouble::PI;
-//! // sin(pi/6) = 1/2 to about 2^-106.
-//! let half = (pi / 6.0).sin();
-//! assert!((half - 0.5).abs().to_f64() < 1e-31);
-//! // 4 atan2(1, 1) = pi, far beyond f64.
-//! let q = DoubleDouble::from_f64(1.0).atan2(DoubleDouble::from_f64(1.0)) * 4.0;
-//! assert!((q - pi).abs().to_f64() < 1e-31);
-//! // The `Real` trait, as the oracle uses it.
-//! let two = <DoubleDouble as Real>::from_f64(2.0);
-//! let r = Real::sqrt(two);
-//! assert!((r * r - two).abs().to_f64() < 1e-31);
-//! ```
+//! The `reference` feature implements the oracle's `Real` trait for
+//! [`DoubleDouble`] (in `reference/real.rs`); its example is in
+//! `reference::dd`'s documentation.
 
 use core::cmp::Ordering;
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
-use super::real::Real;
 use crate::Float;
 
 /// `a * b + c` with a single rounding.
@@ -669,51 +654,6 @@ impl Div<f64> for DoubleDouble {
     }
 }
 
-impl Real for DoubleDouble {
-    fn from_f64(x: f64) -> Self {
-        DoubleDouble::from_f64(x)
-    }
-    fn to_f64(self) -> f64 {
-        DoubleDouble::to_f64(self)
-    }
-    fn add(self, o: Self) -> Self {
-        self.add_dd(o)
-    }
-    fn sub(self, o: Self) -> Self {
-        self.sub_dd(o)
-    }
-    fn mul(self, o: Self) -> Self {
-        self.mul_dd(o)
-    }
-    fn div(self, o: Self) -> Self {
-        self.div_dd(o)
-    }
-    fn sqrt(self) -> Self {
-        DoubleDouble::sqrt(self)
-    }
-    fn sin(self) -> Self {
-        DoubleDouble::sin(self)
-    }
-    fn cos(self) -> Self {
-        DoubleDouble::cos(self)
-    }
-    fn atan2(self, x: Self) -> Self {
-        DoubleDouble::atan2(self, x)
-    }
-    fn acos(self) -> Self {
-        DoubleDouble::acos(self)
-    }
-    fn floor(self) -> Self {
-        DoubleDouble::floor(self)
-    }
-    fn pi() -> Self {
-        Self::PI
-    }
-    fn abs(self) -> Self {
-        DoubleDouble::abs(self)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -1193,54 +1133,5 @@ mod tests {
         }
         assert!(worst < 1e-31, "worst cos(acos x) - x: {worst:e}");
         assert!(d(f64::NAN).acos().is_nan(), "acos NaN");
-    }
-
-    /// The oracle only sees `Real`: a generic computation through it.
-    fn hypot_angle<R: Real>(p: R, q: R) -> (R, R) {
-        (p.mul(p).add(q.mul(q)).sqrt(), q.atan2(p))
-    }
-
-    #[test]
-    fn the_real_impl_delegates() {
-        let (b, phi) = hypot_angle(DoubleDouble::from_f64(3.0), DoubleDouble::from_f64(4.0));
-        assert_eq!(b, DoubleDouble::from_f64(5.0), "hypot(3, 4)");
-        // atan2(4, 3) from mpmath
-        let want = dd(0.927_295_218_001_612_2, 4.539_755_490_592_337_4e-17);
-        assert!(rel(phi, want) < 2.0 * U2, "atan2(4, 3) = {phi:?}");
-        let x = <DoubleDouble as Real>::from_f64(-2.5);
-        assert_eq!(Real::floor(x), DoubleDouble::from_f64(-3.0), "floor");
-        assert_eq!(Real::abs(x), DoubleDouble::from_f64(2.5), "abs");
-        assert_eq!(
-            Real::to_f64(<DoubleDouble as Real>::pi()),
-            core::f64::consts::PI,
-            "pi"
-        );
-        assert_eq!(Real::to_f64(dd(1.0, 2f64.powi(-53))), 1.0, "to_f64 rounds");
-        let h = <DoubleDouble as Real>::from_f64(0.5);
-        assert!(
-            err(
-                Real::mul(Real::acos(h), DoubleDouble::from_f64(3.0)),
-                DoubleDouble::PI
-            ) < 1e-31,
-            "acos"
-        );
-        assert!(
-            err(
-                Real::sin(Real::div(DoubleDouble::PI, DoubleDouble::from_f64(6.0))),
-                h
-            ) < 1e-31,
-            "sin"
-        );
-        assert!(
-            err(
-                Real::cos(Real::div(DoubleDouble::PI, DoubleDouble::from_f64(3.0))),
-                h
-            ) < 1e-31,
-            "cos"
-        );
-        assert!(
-            Real::max(h, x) == h && Real::sub(h, x) == DoubleDouble::from_f64(3.0),
-            "max, sub"
-        );
     }
 }
