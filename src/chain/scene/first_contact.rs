@@ -178,8 +178,8 @@ impl<T: Float> EdgeChecker<'_, T> {
             if width.partial_cmp(&floor) != Some(core::cmp::Ordering::Greater) {
                 break;
             }
-            let times = (T::ONE / width).to_f64().round();
-            let start = (lo.to_f64() * times).round();
+            let times = Float::floor((T::ONE / width).to_f64() + 0.5);
+            let start = Float::floor(lo.to_f64() * times + 0.5);
             let (times, start) = (times as u32, start as u32);
             let scale = T::ONE / T::from_u32(times);
             if T::from_u32(start) * scale != lo || T::from_u32(start + 1) * scale != hi {
