@@ -9,7 +9,7 @@
 //! checked *strictly* against it (an error of a few `u^2` cannot hide a
 //! violation of an `f64` bound, whose own granularity is `u`); and a chain's
 //! clearance, whose nearest pair's links are re-placed in it
-//! (`chain/refine.rs`, `proofs/13-chains.md`, Lemma 13.16).
+//! (`chain/scene/refine.rs`, `proofs/13-chains.md`, Lemma 13.16).
 //!
 //! # Algorithms
 //!

@@ -12,7 +12,7 @@
 //!
 //! **The oracle's own error.** Every double-double operation errs by at
 //! most `4 u^2` relative (`u = 2^-53`), sine and cosine by `2e-32`
-//! absolute (`src/reference/dd.rs`); a chain of at most 8 levels takes
+//! absolute (`src/dd.rs`); a chain of at most 8 levels takes
 //! fewer than 200 operations per level on values below 30, so a velocity
 //! component errs by less than `8 * 200 * 4 u^2 * 30 < 2^-88` times the
 //! scale of `Model::tolerance` (the sum of the rates times the levers the

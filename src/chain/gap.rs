@@ -334,7 +334,13 @@ pub(super) fn min_gap<T: Float>(
                 if closest.is_none_or(|(d, _, _)| distance < d) {
                     closest = Some((distance, cp.on_a, cp.on_b));
                 }
-                let g = slab_gap(&pa, &pb, cp.on_b - cp.on_a, a, b, inflate).min_nan(distance);
+                // The slab along the closest points' computed direction, or
+                // the separating axes' when larger: near-parallel features
+                // tilt the former by their witnesses' rounding, about `u`
+                // of the coordinates over the distance (Lemma 13.16, item 4).
+                let g = slab_gap(&pa, &pb, cp.on_b - cp.on_a, a, b, inflate)
+                    .max_nan(g1)
+                    .min_nan(distance);
                 let g = if g.is_nan() { -T::INFINITY } else { g };
                 if g < best {
                     best = g;

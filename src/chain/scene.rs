@@ -17,9 +17,11 @@ use crate::chain::report::{ChainPair, ChainStats, PathReport, SegmentOutcome, Se
 use crate::chain::segment::{Segment, Work};
 use crate::chain::shapes::ShapeObstacle;
 use crate::geometry::gjk::ConvexPolytope;
+use crate::rounding::gap_slack_up;
 use crate::{Float, Pose};
 
 mod first_contact;
+mod refine;
 
 /// A chain in still surroundings: what a planner's motion validator asks
 /// about. Pairs of adjacent links (joined by one joint, or rigidly through
@@ -432,22 +434,31 @@ impl<T: Float> ChainScene<T> {
     /// pairs at configuration `q` (`<= 0` for touching or overlapping
     /// surfaces, up to rounding), and the pair that attains it (`None` when
     /// nothing is checked): links against mesh obstacles, shape obstacles
-    /// (primitives, half-spaces, point clouds) and each other.
+    /// (primitives, half-spaces, point clouds) and each other. When what
+    /// the nearest pair's bound deducts for the rounding of the forward
+    /// kinematics is more than `2^-33` of it, its links are placed again in
+    /// double-double arithmetic and it is measured again (so is any pair
+    /// still below it), which keeps the bound within about `1e-14` (in `f64`)
+    /// of the distance plus the gap's own rounding
+    /// (`proofs/13-chains.md`, Lemma 13.16).
     ///
     /// # Errors
     /// [`ChainError::WrongDof`] and [`ChainError::NonFiniteCoordinate`].
     pub fn clearance(&self, q: &[T]) -> Result<(T, Option<ChainPair>), ChainError> {
-        let mut best = (T::INFINITY, None);
+        let mut best = T::INFINITY;
+        let mut bounds = Vec::new();
         let shapes = &self.shapes;
         self.each_checked_pair_at(q, |p, stack| {
             let mut stats = ChainStats::default();
-            let d = placed_gap(&p, shapes, best.0, T::ZERO, stack, &mut stats).gap;
-            if d < best.0 {
-                best = (d, Some(p.pair));
+            let d = placed_gap(&p, shapes, best, T::ZERO, stack, &mut stats).gap;
+            if d < best {
+                best = d;
             }
+            let deducted = gap_slack_up(p.a.delta, p.b.delta, p.a.reach + p.b.reach);
+            bounds.push((d, p.pair, deducted));
             ControlFlow::Continue(())
         })?;
-        Ok(best)
+        Ok(self.refined_clearance(q, bounds))
     }
 
     /// Whether some checked pair's surfaces meet at configuration `q` (a
