@@ -42,12 +42,25 @@ fn count(var: &str, default: usize) -> usize {
 /// The truth's sampling tolerance (world units).
 const TOL: f64 = 1e-4;
 
-/// How far below the true distance `clearance` may be: `REL` of it, or
-/// `ABS` (the certified gap deducts the forward kinematics' rounding bound,
-/// Lemma 13.3, about `1e-11` for the Panda's links, so that `1e-9` relative
-/// cannot hold below a centimetre).
+/// How far below the true distance `clearance` may be where the truth is
+/// exact: `REL` of it, and `FLOOR` more (the certified gap's own resolution
+/// in `f64`, which `REL` covers from `5e-5` up: against a shape, the rigid
+/// certificate's `64 u` of the weights, `proofs/12-shapes.md`, section
+/// "Support", up to about `4e-14` here; against meshes and links, Lemma
+/// 13.16's placement errors and the slab's `gamma_8` of the reaches, under
+/// `1e-14`). Without the double-double
+/// re-placement of the nearest pair (Lemma 13.16) the deficit is Lemma
+/// 13.3's placement margin, about `4e-13` on the Panda, `1e-9` relative at
+/// `4e-4`, which the near-contact configurations below reach.
 const REL: f64 = 1e-9;
+const FLOOR: f64 = 5e-14;
+/// Where a cylinder's truth is a sandwich (`lo < hi`), the check is one
+/// sided (never above `hi`); below `lo` by at most `REL` of it or `ABS`.
 const ABS: f64 = 1e-10;
+/// Near-contact configurations are sought with a true distance in
+/// `[NEAR_LO, NEAR_HI]`.
+const NEAR_LO: f64 = 1e-5;
+const NEAR_HI: f64 = 2e-4;
 
 /// Sides of the prisms about and in a cylinder (the truth's two bounds).
 const SIDES: u32 = 64;
@@ -249,6 +262,9 @@ struct Tally {
     worst_abs: f64,
     collides_wrong: usize,
     ambiguous: usize,
+    /// Configurations at a true distance in `[NEAR_LO, NEAR_HI]`, found by
+    /// bisection on the truth along the segments that touch (of `configs`).
+    near: usize,
     segments: usize,
     contacts: usize,
     truth_touches: usize,
@@ -271,37 +287,27 @@ fn run(
     let mut t = Tally::default();
     for _ in 0..configs {
         let q = random_q(&mut rng, &limits);
-        let (lo, hi, pair) = truth.min_distance_exact(&q);
-        let (c, _) = scene.clearance(&q).expect("clearance takes every kind");
-        t.configs += 1;
-        if lo == hi {
-            t.exact_min += 1;
+        check_config(scene, truth, &q, &mut t);
+    }
+    // Near contact (one configuration in 20 more): bisection between a
+    // free and a touching random configuration.
+    for _ in 0..configs {
+        if t.near >= configs.div_ceil(20) {
+            break;
         }
-        // Never above the true distance (at most `hi`).
-        if c > hi {
-            t.above_truth += 1;
-            eprintln!("clearance {c} above the truth's {hi} ({pair:?}) at {q:?}");
-        }
-        // Within 1e-9 relative of it (of `lo`, the least it can be).
-        if lo > 0.0 {
-            let rel = (lo - c) / lo;
-            if lo == hi && rel > t.worst_rel {
-                (t.worst_rel, t.worst_at) = (rel, lo);
-            }
-            if lo == hi {
-                t.worst_abs = t.worst_abs.max(lo - c);
-            }
-            if c < lo * (1.0 - REL) - ABS {
-                t.loose += 1;
-                eprintln!("clearance {c} below the truth's {lo} by {rel} ({pair:?})");
-            }
-        }
-        let collides = scene.collides_at(&q).expect("collides_at takes every kind");
-        if hi <= 0.0 && !collides || lo > 1e-9 && collides {
-            t.collides_wrong += 1;
-            eprintln!("collides_at {collides} with the truth's [{lo}, {hi}] ({pair:?})");
-        } else if !(hi <= 0.0 || lo > 1e-9) {
-            t.ambiguous += 1;
+        let (qa, qb) = (random_q(&mut rng, &limits), random_q(&mut rng, &limits));
+        let (da, db) = (
+            truth.min_distance_exact(&qa).0,
+            truth.min_distance_exact(&qb).0,
+        );
+        let (free, touching) = match (da > NEAR_HI, db > NEAR_HI) {
+            (true, false) if db < NEAR_LO => (qa, qb),
+            (false, true) if da < NEAR_LO => (qb, qa),
+            _ => continue,
+        };
+        if let Some(q) = near_contact(truth, &free, &touching) {
+            t.near += 1;
+            check_config(scene, truth, &q, &mut t);
         }
     }
     let mut range = |a: f64, b: f64| rng.range(a, b);
@@ -325,6 +331,7 @@ fn run(
         );
         let sampled = truth.sample(&q0, &q1, TOL);
         t.segments += 1;
+
         let found = match report.outcome {
             SegmentOutcome::Contact(c) => {
                 t.contacts += 1;
@@ -355,6 +362,69 @@ fn run(
     t
 }
 
+/// Checks `clearance` and `collides_at` at `q` against the truth.
+fn check_config(scene: &ChainScene<f64>, truth: &Truth, q: &[f64], t: &mut Tally) {
+    let (lo, hi, pair) = truth.min_distance_exact(q);
+    let (c, _) = scene.clearance(q).expect("clearance takes every kind");
+    t.configs += 1;
+    if lo == hi {
+        t.exact_min += 1;
+    }
+    // Never above the true distance (at most `hi`).
+    if c > hi {
+        t.above_truth += 1;
+        eprintln!("clearance {c} above the truth's {hi} ({pair:?}) at {q:?}");
+    }
+    // Within 1e-9 relative of it where it is exact; of `lo`, the least it
+    // can be, by `ABS` more for a cylinder's sandwich.
+    if lo > 0.0 {
+        let rel = (lo - c) / lo;
+        if lo == hi && rel > t.worst_rel {
+            (t.worst_rel, t.worst_at) = (rel, lo);
+        }
+        if lo == hi {
+            t.worst_abs = t.worst_abs.max(lo - c);
+        }
+        let least = if lo == hi {
+            lo * (1.0 - REL) - FLOOR
+        } else {
+            lo * (1.0 - REL) - ABS
+        };
+        if c < least {
+            t.loose += 1;
+            eprintln!("clearance {c} below the truth's {lo} by {rel} ({pair:?}) at {q:?}");
+        }
+    }
+    let collides = scene.collides_at(q).expect("collides_at takes every kind");
+    if hi <= 0.0 && !collides || lo > 1e-9 && collides {
+        t.collides_wrong += 1;
+        eprintln!("collides_at {collides} with the truth's [{lo}, {hi}] ({pair:?})");
+    } else if !(hi <= 0.0 || lo > 1e-9) {
+        t.ambiguous += 1;
+    }
+}
+
+/// A configuration of the segment `q0 -> q1` at a true distance in
+/// `[NEAR_LO, NEAR_HI]`: bisection on the truth's distance between the free
+/// `q0` and the touching `q1` (at most 80 halvings).
+fn near_contact(truth: &Truth, q0: &[f64], q1: &[f64]) -> Option<Vec<f64>> {
+    let at = |s: f64| -> Vec<f64> { q0.iter().zip(q1).map(|(a, b)| a + s * (b - a)).collect() };
+    let (mut free, mut near) = (0.0, 1.0);
+    for _ in 0..80 {
+        let mid = 0.5 * (free + near);
+        let q = at(mid);
+        let d = truth.min_distance_exact(&q).0;
+        if d > NEAR_HI {
+            free = mid;
+        } else if d < NEAR_LO {
+            near = mid;
+        } else {
+            return Some(q);
+        }
+    }
+    None
+}
+
 fn check(name: &str, t: &Tally) {
     println!("{name}: {t:?}");
     assert_eq!(
@@ -372,6 +442,7 @@ fn check(name: &str, t: &Tally) {
         t.contacts > 0 && t.truth_touches > 0,
         "{name}: no contact exercised"
     );
+    assert!(t.near > 0, "{name}: no near-contact configuration");
 }
 
 #[test]
@@ -539,10 +610,9 @@ fn r32(x: f64) -> f64 {
     f64::from(x as f32)
 }
 
-/// The Panda in `f32` among a cuboid, a cylinder, a floor, a point cloud
-/// and a mesh board (every number `f32`-exact), its `f64` twin of exactly
-/// the same numbers for the truth, and the truth's shapes.
-fn mixed_f32(seed: u64) -> Result<(ChainScene<f32>, WithTruth), Error> {
+/// The Panda's bare scene in `f32` and its `f64` twin of exactly the same
+/// numbers (the same pairs allowed).
+fn panda_twins() -> Result<(ChainScene<f32>, ChainScene<f64>), Error> {
     let (bare, _) = bare_arm_scene(Arm::Panda)?;
     let (c32, c64) = arm_scene::chain_in_f32(bare.chain());
     let (mut s32, mut s64) = (ChainScene::new(c32), ChainScene::new(c64));
@@ -556,6 +626,64 @@ fn mixed_f32(seed: u64) -> Result<(ChainScene<f32>, WithTruth), Error> {
             }
         }
     }
+    Ok((s32, s64))
+}
+
+/// MotionBenchMaker's scene `name` in `f32` (every number of the scene
+/// rounded to `f32`: poses, half-extents, radii) and its exact `f64` twin
+/// for the truth, with the truth's shapes.
+fn mbm_f32(name: &str) -> Result<(ChainScene<f32>, WithTruth), Error> {
+    let (mut s32, s64) = panda_twins()?;
+    let path = format!(
+        "{}/data/mbm/{name}.json",
+        concat!(env!("CARGO_MANIFEST_DIR"), "/..")
+    );
+    let json: Value = serde_json::from_str(&std::fs::read_to_string(&path)?)?;
+    let list = |key: &str| json[key].as_array().cloned().unwrap_or_default();
+    let pose32 = |r: &M3, c: &V3| Pose::<f32> {
+        rotation: r.map(|row| row.map(|x| x as f32)),
+        translation: Vec3::from_array(c.map(|x| x as f32)),
+    };
+    let mut truth = Vec::new();
+    for c in list("cuboids") {
+        let (r, centre) = (
+            rotation(&c["rotation"])?.map(|row| row.map(r32)),
+            vec3(&c["center"])?.map(r32),
+        );
+        let h = vec3(&c["half_extents"])?.map(r32);
+        s32.add_shape(ShapeObstacle::try_new(
+            "cuboid",
+            Convex::try_cuboid(h.map(|x| x as f32))?,
+            pose32(&r, &centre),
+        )?);
+        let mesh = bodies::cuboid::<f64>(h.map(|x| 2.0 * x))?;
+        let t = TruthShape::polytope(&corners(&mesh), &Place { r, x: centre });
+        truth.push((t.clone(), t));
+    }
+    for c in list("cylinders") {
+        let (r, centre) = (
+            rotation(&c["rotation"])?.map(|row| row.map(r32)),
+            vec3(&c["center"])?.map(r32),
+        );
+        let radius = r32(c["radius"].as_f64().ok_or("radius")?);
+        let h = r32(c["half_length"].as_f64().ok_or("half_length")?);
+        // Ours are along their y: turn y onto z (a signed permutation, exact).
+        let y_to_z = [[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]];
+        s32.add_shape(ShapeObstacle::try_new(
+            "cylinder",
+            Convex::try_cylinder(h as f32, radius as f32)?,
+            pose32(&mat_mul(&r, &y_to_z), &centre),
+        )?);
+        truth.push(cylinder_truth(radius, h, &Place { r, x: centre })?);
+    }
+    Ok((s32, (s64, truth)))
+}
+
+/// The Panda in `f32` among a cuboid, a cylinder, a floor, a point cloud
+/// and a mesh board (every number `f32`-exact), its `f64` twin of exactly
+/// the same numbers for the truth, and the truth's shapes.
+fn mixed_f32(seed: u64) -> Result<(ChainScene<f32>, WithTruth), Error> {
+    let (mut s32, mut s64) = panda_twins()?;
     let mut rng = Rng::new(seed);
     let mut truth = Vec::new();
     let at = |rng: &mut Rng, z: f64| {
@@ -623,22 +751,20 @@ fn mixed_f32(seed: u64) -> Result<(ChainScene<f32>, WithTruth), Error> {
     Ok((s32, (s64, truth)))
 }
 
-/// The mixed scene in `f32` against the truth on its exact `f64` twin:
-/// the clearance never above the truth's distance (and within `5e-4` of it:
+/// An `f32` scene against the truth on its exact `f64` twin: the
+/// clearance never above the truth's distance (and within `5e-4` of it:
 /// the `f32` forward kinematics' certified placement margins, Lemma 13.3,
 /// are a few `1e-5` of the arm's reach per link, both links' for a self
-/// pair), `collides_at` exact away from the
-/// `f32` rounding band, `check_segment` never late nor missed.
-#[test]
-fn mixed_scenes_in_f32_against_the_truth() {
+/// pair; Lemma 13.16 re-places the nearest pair's links), `collides_at`
+/// exact away from the `f32` rounding band, `check_segment` never late nor
+/// missed. Asserts and prints the tally under `name`.
+fn run_f32(name: &str, s32: &ChainScene<f32>, s64: &ChainScene<f64>, truth: &Truth, seed: u64) {
     let (configs, segments) = (
         count("CHAIN_KINDS_CONFIGS", 200),
         count("CHAIN_KINDS_SEGMENTS", 40),
     );
-    let (s32, (s64, shapes)) = mixed_f32(7).expect("scene");
-    let truth = Truth::new(&s64).with_shapes(shapes);
     let limits = joint_limits(s64.chain());
-    let mut rng = Rng::new(6363);
+    let mut rng = Rng::new(seed);
     let (mut above, mut loose, mut wrong, mut missed, mut late, mut contacts, mut touches) =
         (0, 0, 0, 0, 0, 0, 0);
     let mut worst = 0.0f64;
@@ -650,14 +776,14 @@ fn mixed_scenes_in_f32_against_the_truth() {
         let c = f64::from(s32.clearance(&q).expect("clearance").0);
         if c > hi {
             above += 1;
-            eprintln!("f32 clearance {c} above the truth's {hi} ({pair:?})");
+            eprintln!("{name}: f32 clearance {c} above the truth's {hi} ({pair:?})");
         }
         if lo == hi && lo > 0.0 {
             worst = worst.max(lo - c);
         }
         if lo > 0.0 && c < lo - 5e-4 {
             loose += 1;
-            eprintln!("f32 clearance {c} below the truth's {lo} ({pair:?})");
+            eprintln!("{name}: f32 clearance {c} below the truth's {lo} ({pair:?})");
         }
         let collides = s32.collides_at(&q).expect("collides_at");
         // Touching taken on a computed distance, or on no certified gap
@@ -665,7 +791,7 @@ fn mixed_scenes_in_f32_against_the_truth() {
         if hi <= 0.0 && !collides || lo > 5e-4 && collides {
             wrong += 1;
             eprintln!(
-                "f32 collides_at {collides}, the truth's [{lo}, {hi}] ({pair:?}), clearance {c}"
+                "{name}: f32 collides_at {collides}, the truth's [{lo}, {hi}] ({pair:?}), clearance {c}"
             );
         }
     }
@@ -687,24 +813,44 @@ fn mixed_scenes_in_f32_against_the_truth() {
             match found {
                 None => {
                     missed += 1;
-                    eprintln!("f32 missed {pair:?} at {touch}");
+                    eprintln!("{name}: f32 missed {pair:?} at {touch}");
                 }
                 Some(t) if t > touch => {
                     late += 1;
-                    eprintln!("f32 late {t} after {touch} ({pair:?})");
+                    eprintln!("{name}: f32 late {t} after {touch} ({pair:?})");
                 }
                 Some(_) => {}
             }
         }
     }
     println!(
-        "f32 mixed: configs {configs}, above {above}, loose {loose} (worst deficit {worst:e}), collides_at wrong {wrong}; \
+        "f32 {name}: configs {configs}, above {above}, loose {loose} (worst deficit {worst:e}), collides_at wrong {wrong}; \
          segments {segments}, contacts {contacts}, truth touches {touches}, missed {missed}, late {late}"
     );
     assert_eq!(
         (above, loose, wrong, missed, late),
         (0, 0, 0, 0, 0),
-        "f32 against the truth"
+        "{name}: f32 against the truth"
     );
-    assert!(contacts > 0 && touches > 0, "no contact exercised");
+    assert!(contacts > 0 && touches > 0, "{name}: no contact exercised");
+}
+
+/// The mixed scene in `f32` against the truth on its exact `f64` twin
+/// ([`run_f32`]).
+#[test]
+fn mixed_scenes_in_f32_against_the_truth() {
+    let (s32, (s64, shapes)) = mixed_f32(7).expect("scene");
+    let truth = Truth::new(&s64).with_shapes(shapes);
+    run_f32("mixed", &s32, &s64, &truth, 6363);
+}
+
+/// MotionBenchMaker's three scenes in `f32` (numbers rounded to `f32`)
+/// against the truth on their exact `f64` twins ([`run_f32`]).
+#[test]
+fn mbm_scenes_in_f32_against_the_truth() {
+    for (i, name) in ["table_pick", "bookshelf_small", "cage"].iter().enumerate() {
+        let (s32, (s64, shapes)) = mbm_f32(name).expect("scene");
+        let truth = Truth::new(&s64).with_shapes(shapes);
+        run_f32(name, &s32, &s64, &truth, 6400 + i as u64);
+    }
 }
