@@ -3,8 +3,16 @@
 # library with AddressSanitizer and UndefinedBehaviorSanitizer, and runs it with
 # LeakSanitizer on, and tests/c/test_chain.c (chains) likewise: any sanitizer report, leak or
 # failed check fails the script. Also checks that the C tests call every function the header declares. Usage: tests/run_c_tests.sh
-# (from anywhere; CC overrides the compiler, default cc).
+# (from anywhere; CC overrides the compiler, default cc). Installs cmake and pkg-config with apt-get
+# when missing.
 set -euo pipefail
+# The installed files' check below needs CMake and pkg-config: installed with apt-get when missing
+# (as examples/bullet.sh and examples/ompl.sh do for theirs).
+if ! command -v cmake >/dev/null || ! command -v pkg-config >/dev/null; then
+  sudo_=""; [ "$(id -u)" -ne 0 ] && sudo_="sudo"
+  $sudo_ apt-get update -q
+  $sudo_ apt-get install -y -q cmake pkg-config
+fi
 here="$(cd "$(dirname "$0")/.." && pwd)"
 root="$(cd "$here/.." && pwd)"
 cd "$root"
