@@ -10,6 +10,7 @@
 
 use alloc::vec;
 use alloc::vec::Vec;
+use core::cmp::Ordering;
 
 use super::ChainScene;
 use crate::chain::bound::LinkMotion;
@@ -156,7 +157,7 @@ pub(super) fn placed_link<T: Float>(chain: &Chain<T>, q: &[T], l: usize) -> Opti
         lever += length_up(origin.translation);
         let Some(dof) = joint.dof else { continue };
         let qj = q[dof].to_f64();
-        if !(qj.abs() <= MAX_COORD) {
+        if qj.is_nan() || qj.abs() > MAX_COORD {
             return None;
         }
         let k = unit(Vec3::from_array(joint.spec.axis))?;
@@ -167,7 +168,7 @@ pub(super) fn placed_link<T: Float>(chain: &Chain<T>, q: &[T], l: usize) -> Opti
             lever += qj.abs();
         }
     }
-    if !(off <= MAX_OFF) {
+    if off.is_nan() || off > MAX_OFF {
         return None;
     }
     let pose = Pose {
@@ -222,7 +223,8 @@ impl<T: Float> ChainScene<T> {
             return (g0, None);
         };
         let deducted = bounds[i0].2;
-        if !(deducted > g0.abs() * T::from_f64(REFINE_ABOVE)) {
+        let above = g0.abs() * T::from_f64(REFINE_ABOVE);
+        if deducted.partial_cmp(&above) != Some(Ordering::Greater) {
             return (g0, Some(pair0));
         }
         let mut placed: Vec<Option<Option<LinkMotion<T>>>> = vec![None; self.chain.links.len()];
@@ -234,13 +236,13 @@ impl<T: Float> ChainScene<T> {
         };
         let theta = g.max_nan(g0);
         bounds[i0].0 = theta;
-        for i in 0..bounds.len() {
-            let (gi, pair, _) = bounds[i];
-            if i == i0 || !(gi < theta) {
+        for (i, b) in bounds.iter_mut().enumerate() {
+            let (gi, pair, _) = *b;
+            if i == i0 || gi.partial_cmp(&theta) != Some(Ordering::Less) {
                 continue;
             }
             match self.refined_gap(q, pair, theta, &mut placed, &mut stack, &mut stats) {
-                Some(g) => bounds[i].0 = g.max_nan(gi),
+                Some(g) => b.0 = g.max_nan(gi),
                 // A link the lemma does not place: the first answer stands.
                 None => return (g0, Some(pair0)),
             }
