@@ -77,7 +77,7 @@ impl Pieces {
             let longest = norm(sub(b, a)).max(norm(sub(c, b))).max(norm(sub(a, c)));
             // `n` pieces along each edge (at least one).
             let n = if longest > size {
-                ((longest / size).ceil() as usize).min(MAX_SPLIT)
+                (ceil(longest / size) as usize).min(MAX_SPLIT)
             } else {
                 1
             };
@@ -158,7 +158,7 @@ impl LinkCover {
                     let [a, b, c] = t.map(|i| v[i as usize]);
                     let l = norm(sub(b, a)).max(norm(sub(c, b))).max(norm(sub(a, c)));
                     let n = if l > size {
-                        ((l / size).ceil() as usize).min(MAX_SPLIT)
+                        (ceil(l / size) as usize).min(MAX_SPLIT)
                     } else {
                         1
                     };
@@ -310,7 +310,7 @@ fn deep_cover(
     }
     let step = diag / 16.0;
     let mut cands: Vec<([f64; 3], f64)> = Vec::new();
-    let counts = [0, 1, 2].map(|k| (((hi[k] - lo[k]) / step).ceil() as usize).clamp(1, 24));
+    let counts = [0, 1, 2].map(|k| (ceil((hi[k] - lo[k]) / step) as usize).clamp(1, 24));
     for i in 0..counts[0] {
         for j in 0..counts[1] {
             for k in 0..counts[2] {
@@ -484,6 +484,11 @@ fn split(pieces: &Pieces, order: &mut [u32], lo: usize, hi: usize) -> usize {
         pieces.centroids[x as usize][axis].total_cmp(&pieces.centroids[y as usize][axis])
     });
     lo + mid
+}
+
+/// `ceil` without `std` (`-floor(-x)`, exact).
+fn ceil(x: f64) -> f64 {
+    -<f64 as crate::Float>::floor(-x)
 }
 
 #[cfg(test)]

@@ -175,6 +175,12 @@ fn not_above(g: &Lane, tau: f32) -> u8 {
     m
 }
 
+/// Sine and cosine in `f64`, with or without `std` (the crate's `Float`).
+#[inline]
+fn sin_cos(x: f64) -> (f64, f64) {
+    (Float::sin(x), Float::cos(x))
+}
+
 /// An order-preserving key of a float (smaller first; NaN last).
 fn order_key(x: f32) -> u32 {
     if x.is_nan() {
@@ -392,9 +398,9 @@ impl<T: Float> Rake<'_, T> {
         for d in 0..dofs {
             let (a, b) = (q0[d].to_f64(), q1[d].to_f64());
             let dq = b - a;
-            let (mut s, mut c) = (a + 0.5 * step * dq).sin_cos();
+            let (mut s, mut c) = sin_cos(a + 0.5 * step * dq);
             let (sd, cd) = if kk > 1 {
-                (step * dq).sin_cos()
+                sin_cos(step * dq)
             } else {
                 (0.0, 1.0)
             };

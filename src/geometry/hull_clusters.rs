@@ -21,6 +21,7 @@
 //! far holds no vertex above it: skipping it returns a vertex of the
 //! largest computed dot product still.
 
+#[cfg(feature = "alloc")]
 use crate::rounding::gamma;
 use crate::{Float, Vec3};
 
@@ -127,6 +128,7 @@ fn split<T: Float>(
 
 /// `E = up((e + 2 gamma_16 M)(1 + gamma_16))` for a cluster's computed
 /// `e` and the polytope's `M >= max |v|_inf` (the module's bound).
+#[cfg(feature = "alloc")]
 #[must_use]
 pub(crate) fn cluster_reach<T: Float>(e: T, big: T) -> T {
     let m = (gamma::<T>(16) * (big + big)).next_up();
@@ -162,8 +164,13 @@ pub(crate) fn clustered_support<T: Float>(
     let c0 = &clusters[first];
     let mut bi = c0.start as usize;
     let mut best = dot(&vertices[bi]);
-    for i in (c0.start as usize + 1)..(c0.end as usize) {
-        let s = dot(&vertices[i]);
+    let run = |c: &HullCluster<T>| {
+        vertices[c.start as usize..c.end as usize]
+            .iter()
+            .zip(c.start as usize..)
+    };
+    for (v, i) in run(c0).skip(1) {
+        let s = dot(v);
         if s > best {
             best = s;
             bi = i;
@@ -174,8 +181,8 @@ pub(crate) fn clustered_support<T: Float>(
         if k == first || bounds.get(k).is_some_and(|&b| b <= best) {
             continue;
         }
-        for i in (c.start as usize)..(c.end as usize) {
-            let s = dot(&vertices[i]);
+        for (v, i) in run(c) {
+            let s = dot(v);
             if s > best {
                 best = s;
                 bi = i;
@@ -203,7 +210,7 @@ mod tests {
             let n = 10 + (rng.next_u64() % 500) as usize;
             // Points on a sphere (every one extreme), some on a flat patch
             // (near ties), at scales from 1e-3 to 1e3, off the origin.
-            let scale = T::from_f64(10f64.powi((case % 7) as i32 - 3));
+            let scale = T::from_f64(10f64.powi((case % 7) - 3));
             let off = [0, 1, 2].map(|_| T::from_f64(rng.unit() * 4.0 - 2.0) * scale);
             let mut v: alloc::vec::Vec<[T; 3]> = (0..n)
                 .map(|i| {
@@ -218,11 +225,11 @@ mod tests {
                 .collect();
             let mut clusters = cluster_vertices(&mut v);
             for c in &mut clusters {
-                c.reach = c.reach * reach_scale;
+                c.reach *= reach_scale;
             }
             for _ in 0..200 {
                 let mut d = [0, 1, 2].map(|_| rng.unit() * 2.0 - 1.0);
-                if rng.next_u64() % 4 == 0 {
+                if rng.next_u64().is_multiple_of(4) {
                     d = [0.0, 0.0, 1.0 + rng.unit() * 1e-6];
                 }
                 let d = Vec3::new(T::from_f64(d[0]), T::from_f64(d[1]), T::from_f64(d[2]));

@@ -405,6 +405,7 @@ impl<'a, T: Float> Convex<'a, T> {
     }
 
     /// Whether the core is placed in the body frame (a compound's part).
+    #[cfg(feature = "alloc")]
     pub(crate) const fn is_placed(&self) -> bool {
         self.placed.is_some()
     }
