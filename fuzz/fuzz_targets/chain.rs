@@ -1537,12 +1537,18 @@ fn edges(
         "check_path's error with shapes"
     );
     if let (Ok(segment), Ok(path)) = (&segment, &path) {
-        assert_eq!(segment.outcome, path.outcome, "check_path and check_segment with shapes");
+        assert_eq!(
+            segment.outcome, path.outcome,
+            "check_path and check_segment with shapes"
+        );
     }
     let clearance = scene.clearance(q0);
     let collides = scene.collides_at(q0);
     if expected.is_none() {
-        assert!(clearance.is_ok() && collides.is_ok(), "clearance, collides_at with shapes");
+        assert!(
+            clearance.is_ok() && collides.is_ok(),
+            "clearance, collides_at with shapes"
+        );
     }
     let report = scene.check_edge(q0, q1);
     assert_eq!(
