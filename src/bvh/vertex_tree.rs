@@ -3,6 +3,7 @@
 
 use alloc::vec::Vec;
 
+use crate::geometry::hull_clusters::median_split;
 use crate::shape::ball::enclosing_ball;
 use crate::{
     BodySummary, BoundKind, BoundingBall, DirectedBound, DirectedProbe, Direction, Float,
@@ -243,19 +244,7 @@ fn build<T: Float>(
     if vertices.len() <= LEAF_SIZE {
         return Ok(index);
     }
-    let axis = (0..3)
-        .max_by(|&a, &b| {
-            (hi[a] - lo[a])
-                .partial_cmp(&(hi[b] - lo[b]))
-                .unwrap_or(core::cmp::Ordering::Equal)
-        })
-        .unwrap_or(0);
-    let mid = vertices.len() / 2;
-    vertices.select_nth_unstable_by(mid, |a, b| {
-        a[axis]
-            .partial_cmp(&b[axis])
-            .unwrap_or(core::cmp::Ordering::Equal)
-    });
+    let mid = median_split(vertices, lo, hi);
     let (left_half, right_half) = vertices.split_at_mut(mid);
     let left = build(left_half, offset, nodes)?;
     let right = build(right_half, offset + mid, nodes)?;

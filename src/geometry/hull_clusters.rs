@@ -108,6 +108,18 @@ fn split<T: Float>(
         });
         return;
     }
+    let mid = median_split(run, lo, hi);
+    let (left, right) = run.split_at_mut(mid);
+    split(left, start, leaf, big, out);
+    split(right, start + mid, leaf, big, out);
+}
+
+/// Puts the lower half of `run` (by the coordinate along the longest side
+/// of its box `lo..hi`) before the upper half and returns where the upper
+/// half starts (`run.len() / 2`): the split of the crate's vertex trees and
+/// of these clusters.
+#[cfg(feature = "alloc")]
+pub(crate) fn median_split<T: Float>(run: &mut [[T; 3]], lo: [T; 3], hi: [T; 3]) -> usize {
     let axis = (0..3)
         .max_by(|&a, &b| {
             (hi[a] - lo[a])
@@ -121,9 +133,7 @@ fn split<T: Float>(
             .partial_cmp(&b[axis])
             .unwrap_or(core::cmp::Ordering::Equal)
     });
-    let (left, right) = run.split_at_mut(mid);
-    split(left, start, leaf, big, out);
-    split(right, start + mid, leaf, big, out);
+    mid
 }
 
 /// `E = up((e + 2 gamma_16 M)(1 + gamma_16))` for a cluster's computed
