@@ -43,17 +43,18 @@ fn count(var: &str, default: usize) -> usize {
 const TOL: f64 = 1e-4;
 
 /// How far below the true distance `clearance` may be where the truth is
-/// exact: `REL` of it, and `FLOOR` more (the certified gap's own resolution
-/// in `f64`, which `REL` covers from `5e-5` up: against a shape, the rigid
-/// certificate's `64 u` of the weights, `proofs/12-shapes.md`, section
-/// "Support", up to about `4e-14` here; against meshes and links, Lemma
-/// 13.16's placement errors and the slab's `gamma_8` of the reaches, under
-/// `1e-14`). Without the double-double
-/// re-placement of the nearest pair (Lemma 13.16) the deficit is Lemma
-/// 13.3's placement margin, about `4e-13` on the Panda, `1e-9` relative at
-/// `4e-4`, which the near-contact configurations below reach.
+/// exact: `REL` of it, at every true distance drawn (the near-contact ones
+/// from `NEAR_LO`). What the certified gap loses in `f64` is about
+/// `1e-14` at most here: against a shape, its support's rounding at its
+/// exact pose by kind (`proofs/12-shapes.md`, section "Support at an exact
+/// pose"; the rigid certificate's `64 u` of the weights lost up to `4e-14`,
+/// `4e-9` relative at `NEAR_LO`); against meshes and links, Lemma 13.16's
+/// placement errors and the slab's `gamma_8` of the reaches. Without the
+/// double-double re-placement of the nearest pair (Lemma 13.16) the
+/// deficit is Lemma 13.3's placement margin, about `4e-13` on the Panda,
+/// `1e-9` relative at `4e-4`, which the near-contact configurations below
+/// reach.
 const REL: f64 = 1e-9;
-const FLOOR: f64 = 5e-14;
 /// Where a cylinder's truth is a sandwich (`lo < hi`), the check is one
 /// sided (never above `hi`); below `lo` by at most `REL` of it or `ABS`.
 const ABS: f64 = 1e-10;
@@ -386,7 +387,7 @@ fn check_config(scene: &ChainScene<f64>, truth: &Truth, q: &[f64], t: &mut Tally
             t.worst_abs = t.worst_abs.max(lo - c);
         }
         let least = if lo == hi {
-            lo * (1.0 - REL) - FLOOR
+            lo * (1.0 - REL)
         } else {
             lo * (1.0 - REL) - ABS
         };

@@ -4,7 +4,7 @@ use crate::ca::step::{placement_error, precision_limit};
 use crate::ca::{CaParams, CaStep, StepResult, Witness};
 use crate::geometry::closest::segment_segment_vec;
 use crate::geometry::gjk::{gjk_closest, GjkParams, SupportMap};
-use crate::rounding::{gap_down, step_down, sum_up};
+use crate::rounding::{gamma, gap_down, step_down, sum_up};
 use crate::shape::convex::Core;
 use crate::{BoundingBall, Convex, Direction, Float, Point3, Pose, PreparedMotion, Vec3};
 
@@ -106,22 +106,83 @@ fn weight<T: Float>(s: &Convex<'_, T>, p: &Pose<T>) -> T {
 /// [`certified_gap`] from A's computed support value `upper_a` along `n`
 /// (the largest computed `x . n` over A, each term within `64 u` of
 /// `weight_a`, an upper bound of A's points' `|x|_1`) to shape `B` placed by
-/// `pb`: what a chain's edge query measures from a link's ball or triangle
-/// to a shape obstacle (`proofs/13-chains.md`, Lemma 13.6).
-pub(crate) fn certified_gap_to<T: Float>(
+/// `pb`, its placed points within `err_b` of the exact ones.
+fn certified_gap_to<T: Float>(
     upper_a: T,
     weight_a: T,
     err_a: T,
     (b, pb, err_b): (&Convex<'_, T>, &Pose<T>, T),
     n: Vec3<T>,
 ) -> T {
-    // The least `x . n` over B along `-n`.
-    let lower_b =
-        pb.translation.dot(n) - b.core_support_value(pb.inverse_transform_vector(-n)) - b.radius();
     // `gap_down` covers `gamma_8` of the reach it is given; the support's
     // evaluation needs `64 u` of the weights (section "Support").
     let reach = T::from_u32(8) * sum_up(weight_a, weight(b, pb));
-    gap_down(lower_b - upper_a, err_a, err_b, reach)
+    gap_down(lower_support(b, pb, n) - upper_a, err_a, err_b, reach)
+}
+
+/// The least computed `x . n` over shape `b` placed by `pb`: its
+/// translation's part, less its core's support along `-M^T n` and its
+/// radius.
+fn lower_support<T: Float>(b: &Convex<'_, T>, pb: &Pose<T>, n: Vec3<T>) -> T {
+    pb.translation.dot(n) - b.core_support_value(pb.inverse_transform_vector(-n)) - b.radius()
+}
+
+/// An upper bound of how far [`lower_support`] (and the share of it in the
+/// gap's subtraction) may be from the exact least `x . n` over shape `b`
+/// placed by the **exact** pose `pb` (its numbers taken as exact, as a
+/// chain's still obstacles are), for every `n` with `|n| <= 1 + gamma_5`:
+/// `u (7 |x|_1 + (8 + k) c W + 8 rho)` rounded up, with `k` the core's own
+/// rounding ([`Convex::support_rounding`]), `c` the largest column length of
+/// the pose's matrix and `W` the core's weight, plus the underflow terms
+/// (`proofs/12-shapes.md`, section "Support at an exact pose"). A core
+/// placed in the body frame (a compound's part) takes the rigid bound,
+/// `80 u max(c, 1) W'`. Computed once per obstacle.
+pub(crate) fn support_error_up<T: Float>(b: &Convex<'_, T>, pb: &Pose<T>) -> T {
+    let u = T::UNIT_ROUNDOFF;
+    let x = sum_up(pb.translation.norm_l1(), T::ZERO);
+    let (w, rho) = (b.weight(), b.radius());
+    // The largest column length of the pose's matrix, rounded up (unused,
+    // and not computed, for a point core).
+    let c = if w > T::ZERO {
+        let m = &pb.rotation;
+        let sq = (0..3)
+            .map(|i| m[0][i] * m[0][i] + m[1][i] * m[1][i] + m[2][i] * m[2][i])
+            .fold(T::ZERO, T::max_nan);
+        crate::rounding::radius_up(sq)
+    } else {
+        T::ZERO
+    };
+    let cw = c * w;
+    let body = match b.support_rounding() {
+        Some(k) => T::from_u32(7) * x + T::from_u32(8 + k) * cw + T::from_u32(8) * rho,
+        None => T::from_u32(80) * (x + c.max_nan(T::ONE) * w + rho),
+    };
+    let under = T::from_u32(16) * T::ETA_NORMAL * (T::ONE + cw) + T::TWO * cw * T::SQRT_ETA_UP;
+    let e = body * u * (T::ONE + gamma::<T>(8)) + under;
+    if e.is_nan() {
+        T::INFINITY
+    } else {
+        e
+    }
+}
+
+/// The certified slab gap along the exact unit `n/|n|` from A (its computed
+/// largest `x . n` is `upper_a`, within `7 u weight_a` of A's exact one,
+/// `|upper_a| <= weight_a`, A's points within `err_a` of their exact
+/// places) to shape `B` at the exact pose `pb`, whose support's rounding is
+/// at most `e_b` ([`support_error_up`]): what a chain's queries measure
+/// from a link's ball, box or triangle to a still shape obstacle
+/// (`proofs/13-chains.md`, Lemmas 13.6 and 13.14). `<= 0` when not
+/// separated along `n`.
+pub(crate) fn certified_gap_to_exact<T: Float>(
+    upper_a: T,
+    weight_a: T,
+    err_a: T,
+    (b, pb, e_b): (&Convex<'_, T>, &Pose<T>, T),
+    n: Vec3<T>,
+) -> T {
+    // `gamma_8 weight_a` covers A's `7 u` and its share of the subtraction.
+    gap_down(lower_support(b, pb, n) - upper_a, err_a, e_b, weight_a)
 }
 
 impl<T: Float> CaStep<T> for ConvexPair<'_, T> {
@@ -576,5 +637,205 @@ pub(crate) mod tests {
         // below about `1e-3` (the stepper then tries a box's face normal
         // too): the promise is checked from `1e-2` up.
         early_stop_is_sound_and_costs_at_most_its_share::<f32>(1e-4, 1e-2);
+    }
+}
+
+#[cfg(test)]
+mod exact_pose_tests {
+    //! [`support_error_up`] against the exact least `x . n` of a shape at an
+    //! exact pose (`proofs/12-shapes.md`, section "Support at an exact
+    //! pose"): in `f64` against double-double arithmetic, in `f32` against
+    //! `f64`, over every kind, rounded or not, random (not quite
+    //! orthonormal) matrices, translations from `1e-3` to `1e3` and
+    //! directions normalised in the precision at hand.
+    extern crate std;
+
+    use super::{lower_support, support_error_up};
+    use crate::dd::DoubleDouble as Dd;
+    use crate::rng::SplitMix64;
+    use crate::shape::convex::Core;
+    use crate::{Convex, Float, Pose, Vec3};
+
+    /// The exact least `x . n` over `{M k + x : k in K}` grown by the ball
+    /// of radius `rho` (the shape at the exact pose), for the stored `f64`
+    /// numbers: `x . n - h_K(M^T (-n)) - rho |n|`, in double-double
+    /// (`f64` numbers' products and sums are exact to about `1e-32`).
+    fn exact_lower(
+        core: &Core<'_, f64>,
+        rho: f64,
+        m: &[[f64; 3]; 3],
+        x: [f64; 3],
+        n: [f64; 3],
+    ) -> Dd {
+        let dot = |a: [f64; 3], b: [Dd; 3]| (0..3).fold(Dd::ZERO, |s, i| s + b[i] * a[i]);
+        let nd = n.map(Dd::from_f64);
+        // d = M^T (-n): its i-th entry is minus column i of M against n.
+        let d: [Dd; 3] = [0, 1, 2].map(|i| -dot([m[0][i], m[1][i], m[2][i]], nd));
+        let xz = (d[0] * d[0] + d[2] * d[2]).sqrt();
+        let h = match *core {
+            Core::Point => Dd::ZERO,
+            Core::Segment { half_height } => d[1].abs() * half_height,
+            Core::Cuboid { half } => (0..3).fold(Dd::ZERO, |s, i| s + d[i].abs() * half[i]),
+            Core::Cylinder {
+                half_height,
+                radius,
+            } => d[1].abs() * half_height + xz * radius,
+            Core::Cone {
+                half_height,
+                radius,
+            } => {
+                let top = d[1] * half_height;
+                let rim = xz * radius - d[1] * half_height;
+                if top.hi >= rim.hi {
+                    top
+                } else {
+                    rim
+                }
+            }
+            Core::Polytope(_) => unreachable!("no hulls here"),
+        };
+        let len = (0..3).fold(Dd::ZERO, |s, i| s + nd[i] * n[i]).sqrt();
+        dot(x, nd) - h - len * rho
+    }
+
+    /// A random shape of every kind in turn (rounded every other time).
+    fn shape<T: Float>(rng: &mut SplitMix64, i: usize) -> Convex<'static, T> {
+        let mut r = || T::from_f64(rng.range(0.01, 1.0));
+        let s = match i % 5 {
+            0 => Convex::try_ball(r()),
+            1 => Convex::try_capsule(r(), r()),
+            2 => Convex::try_cuboid([r(), r(), r()]),
+            3 => Convex::try_cylinder(r(), r()),
+            _ => Convex::try_cone(r(), r()),
+        }
+        .expect("valid");
+        if i % 10 >= 5 && i % 5 != 0 {
+            s.try_rounded(T::from_f64(0.05)).expect("valid")
+        } else {
+            s
+        }
+    }
+
+    /// A random pose: a rotation from a normalised quaternion (rounded, so
+    /// only nearly orthonormal) and a translation of magnitude `1e-3` to
+    /// `1e3`; and a direction normalised in `T`.
+    fn pose_and_direction<T: Float>(rng: &mut SplitMix64) -> (Pose<T>, Vec3<T>) {
+        let q = [0; 4].map(|_| rng.signed_unit());
+        let l = q.iter().map(|a| a * a).sum::<f64>().sqrt();
+        let [w, a, b, c] = q.map(|v| v / l);
+        let m = [
+            [
+                1.0 - 2.0 * (b * b + c * c),
+                2.0 * (a * b - w * c),
+                2.0 * (a * c + w * b),
+            ],
+            [
+                2.0 * (a * b + w * c),
+                1.0 - 2.0 * (a * a + c * c),
+                2.0 * (b * c - w * a),
+            ],
+            [
+                2.0 * (a * c - w * b),
+                2.0 * (b * c + w * a),
+                1.0 - 2.0 * (a * a + b * b),
+            ],
+        ];
+        let scale = 10f64.powf(rng.range(-3.0, 3.0));
+        let x = rng.vec3().map(|v| T::from_f64(v * scale));
+        let pose = Pose {
+            rotation: m.map(|row| row.map(T::from_f64)),
+            translation: Vec3::from_array(x),
+        };
+        let n = Vec3::from_array(rng.direction().map(T::from_f64));
+        (pose, n.try_normalize().expect("a unit direction"))
+    }
+
+    /// The largest share of [`support_error_up`] the computed least `x . n`
+    /// is from the exact one over `count` random cases (`f64` against
+    /// double-double). `drop_translation` leaves the translation's share
+    /// out of the bound: the check then fails (the bound is not vacuous).
+    fn worst_share_f64(count: usize, drop_translation: bool) -> f64 {
+        let mut rng = SplitMix64(0x5EED_0063);
+        let mut worst = 0.0f64;
+        for i in 0..count {
+            let b: Convex<'static, f64> = shape(&mut rng, i);
+            let (pose, n) = pose_and_direction::<f64>(&mut rng);
+            let mut e = support_error_up(&b, &pose);
+            if drop_translation {
+                let bare = Pose {
+                    translation: Vec3::new(0.0, 0.0, 0.0),
+                    ..pose
+                };
+                e = support_error_up(&b, &bare);
+            }
+            let computed = lower_support(&b, &pose, n);
+            let exact = exact_lower(
+                b.core(),
+                b.radius(),
+                &pose.rotation,
+                pose.translation.to_array(),
+                n.to_array(),
+            );
+            // The bound covers the evaluation and its share `u |computed|`
+            // of the gap's subtraction.
+            let err = (exact - computed).abs().to_f64() + f64::UNIT_ROUNDOFF * computed.abs();
+            worst = worst.max(err / e);
+        }
+        worst
+    }
+
+    #[test]
+    fn support_at_an_exact_pose_is_within_its_bound_in_f64() {
+        let share = worst_share_f64(20_000, false);
+        std::println!("f64: the worst error is {share:.3} of the bound");
+        assert!(share <= 1.0, "an error {share} times the bound");
+        // Sanity: the bound bites where a share is left out.
+        let bare = worst_share_f64(20_000, true);
+        assert!(bare > 1.0, "without the translation's share: {bare}");
+    }
+
+    #[test]
+    fn support_at_an_exact_pose_is_within_its_bound_in_f32() {
+        let mut rng = SplitMix64(0x5EED_0032);
+        let mut worst = 0.0f64;
+        for i in 0..20_000 {
+            let b: Convex<'static, f32> = shape(&mut rng, i);
+            let (pose, n) = pose_and_direction::<f32>(&mut rng);
+            let e = f64::from(support_error_up(&b, &pose));
+            let computed = f64::from(lower_support(&b, &pose, n));
+            // The exact value from the `f32` numbers, in double-double.
+            let core: Core<'static, f64> = match *b.core() {
+                Core::Point => Core::Point,
+                Core::Segment { half_height } => Core::Segment {
+                    half_height: half_height.into(),
+                },
+                Core::Cuboid { half } => Core::Cuboid {
+                    half: half.map(f64::from),
+                },
+                Core::Cylinder {
+                    half_height,
+                    radius,
+                } => Core::Cylinder {
+                    half_height: half_height.into(),
+                    radius: radius.into(),
+                },
+                Core::Cone {
+                    half_height,
+                    radius,
+                } => Core::Cone {
+                    half_height: half_height.into(),
+                    radius: radius.into(),
+                },
+                Core::Polytope(_) => unreachable!("no hulls here"),
+            };
+            let m = pose.rotation.map(|row| row.map(f64::from));
+            let x = pose.translation.to_array().map(f64::from);
+            let exact = exact_lower(&core, b.radius().into(), &m, x, n.to_array().map(f64::from));
+            let err =
+                (exact - computed).abs().to_f64() + f64::from(f32::UNIT_ROUNDOFF) * computed.abs();
+            worst = worst.max(err / e);
+        }
+        std::println!("f32: the worst error is {worst:.3} of the bound");
+        assert!(worst <= 1.0, "an error {worst} times the bound");
     }
 }

@@ -54,7 +54,7 @@ mod vertex_set_vertex_set;
 pub use ball_ball::BallPair;
 pub use convex_convex::ConvexPair;
 #[cfg(feature = "alloc")]
-pub(crate) use convex_convex::{certified_gap_to, PlacedCore};
+pub(crate) use convex_convex::{certified_gap_to_exact, support_error_up, PlacedCore};
 #[cfg(feature = "alloc")]
 pub use dispatch::AnyPair;
 /// The stepper of two [`Convex`](crate::Convex) shapes, under its old name.

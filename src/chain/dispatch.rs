@@ -112,8 +112,8 @@ pub(super) fn placed_gap<T: Float>(
 /// What a link's node is measured against in [`shape_min_gap`].
 fn against_of<T: Float>(o: &ShapeObstacle<T>) -> Option<Against<'_, T>> {
     match &o.geometry {
-        Geometry::Convex(shape) => Some(Against::Convex(shape, o.pose, o.delta)),
-        Geometry::HalfSpace(m) => Some(Against::Plane(*m, o.pose, o.delta)),
+        Geometry::Convex(shape) => Some(Against::Convex(shape, o.pose, o.support_err)),
+        Geometry::HalfSpace(m) => Some(Against::Plane(*m, o.pose, o.support_err)),
         Geometry::Points { .. } => None,
     }
 }
@@ -181,8 +181,7 @@ pub(super) fn shape_min_gap<T: Float>(
                         stats.leaf_pairs += 1;
                         let tri = placed_corners(ta, leaf, a);
                         let points = node_points(tree, nb.start, nb.end);
-                        let (gap, estimate) =
-                            triangle_points_gap(&tri, a.delta, points, ball, o.delta);
+                        let (gap, estimate) = triangle_points_gap(&tri, a.delta, points, ball);
                         best = best.min_nan(gap);
                         if (estimate <= cap_touch || estimate.is_nan())
                             && closest.is_none_or(|(d, _, _)| estimate < d)

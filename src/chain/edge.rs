@@ -649,8 +649,8 @@ impl<T: Float> Edge<'_, T> {
             Target::Shape(s) => {
                 let o = &self.shapes[s as usize];
                 let against = match &o.geometry {
-                    Geometry::Convex(shape) => Against::Convex(shape, o.pose, o.delta),
-                    Geometry::HalfSpace(m) => Against::Plane(*m, o.pose, o.delta),
+                    Geometry::Convex(shape) => Against::Convex(shape, o.pose, o.support_err),
+                    Geometry::HalfSpace(m) => Against::Plane(*m, o.pose, o.support_err),
                     Geometry::Points { .. } => return Verdict::Keep,
                 };
                 let need = add_up(sa, self.padding);
@@ -704,8 +704,7 @@ impl<T: Float> Edge<'_, T> {
                         stats.leaf_tests += 1;
                         let tri = placed_corners(ta, leaf, ma);
                         let points = node_points(tree, nb.start, nb.end);
-                        let (gap, estimate) =
-                            triangle_points_gap(&tri, ma.delta, points, ball, o.delta);
+                        let (gap, estimate) = triangle_points_gap(&tri, ma.delta, points, ball);
                         self.leaf_verdict(gap, estimate, need)
                     }
                     _ => split(

@@ -10,7 +10,7 @@ use alloc::string::String;
 use alloc::vec::Vec;
 
 use crate::bvh::{VertexTree, NO_CHILD};
-use crate::ca::{certified_gap_to, PlacedCore};
+use crate::ca::{certified_gap_to_exact, support_error_up, PlacedCore};
 use crate::chain::model::ChainError;
 use crate::chain::proxy::{convex_proxy, Proxy};
 use crate::geometry::closest::point_triangle_vec;
@@ -59,6 +59,11 @@ pub struct ShapeObstacle<T: 'static> {
     /// An upper bound of the placement's rounding (taken as the shape's
     /// own: the pose's numbers are exact by convention, as for meshes).
     pub(super) delta: T,
+    /// An upper bound of the rounding of its support's evaluation at its
+    /// exact pose, along any computed unit direction (a convex shape's
+    /// [`support_error_up`], a plane's [`plane_error_up`]; `0` for a cloud,
+    /// whose balls take their own): what a slab gap to it subtracts.
+    pub(super) support_err: T,
     /// What the rake's `f32` lanes test against (Lemma 13.12; `None`: the
     /// rake leaves it to the edge engine).
     pub(super) proxy: Option<Proxy>,
@@ -87,6 +92,7 @@ impl<T: Float> ShapeObstacle<T> {
         Ok(Self {
             name: name.into(),
             proxy: convex_proxy(&shape, &pose, delta),
+            support_err: support_error_up(&shape, &pose),
             geometry: Geometry::Convex(shape),
             pose,
             delta,
@@ -119,6 +125,7 @@ impl<T: Float> ShapeObstacle<T> {
                 delta.to_f64(),
             ),
             delta,
+            support_err: plane_error_up(pose.translation),
             pose,
         })
     }
@@ -177,6 +184,7 @@ impl<T: Float> ShapeObstacle<T> {
             geometry: Geometry::Points { tree, radius, ball },
             pose: Pose::IDENTITY,
             delta,
+            support_err: T::ZERO,
             proxy,
         })
     }
@@ -204,6 +212,21 @@ impl<T: Float> ShapeObstacle<T> {
     }
 }
 
+/// An upper bound of the rounding of a half-space's least `x . n` along its
+/// inward unit normal `n` computed as `fl(o . n)` from the point `o` on its
+/// plane, with its share of the gap's subtraction: `5 u |o|_1`, rounded up,
+/// and the underflow of three products (`proofs/13-chains.md`, Lemma 13.6).
+fn plane_error_up<T: Float>(o: Vec3<T>) -> T {
+    let e =
+        T::from_u32(5) * sum_up(o.norm_l1(), T::ZERO) * T::UNIT_ROUNDOFF * (T::ONE + gamma::<T>(8))
+            + T::from_u32(8) * T::ETA_NORMAL;
+    if e.is_nan() {
+        T::INFINITY
+    } else {
+        e
+    }
+}
+
 fn check_pose<T: Float>(pose: &Pose<T>) -> Result<(), ChainError> {
     if !pose.is_finite()
         || pose.translation.max_abs() > T::MAX_INPUT
@@ -216,7 +239,9 @@ fn check_pose<T: Float>(pose: &Pose<T>) -> Result<(), ChainError> {
 
 /// What a link's ball or triangle is measured against: a convex shape (a
 /// primitive, or one ball of a cloud) placed by a pose, or a half-space's
-/// plane seen along its inward normal.
+/// plane seen along its inward normal; each with its pose (exact by
+/// convention) and the rounding of its support's evaluation
+/// ([`ShapeObstacle`]'s `support_err`).
 #[derive(Clone, Copy)]
 pub(super) enum Against<'s, T: 'static> {
     Convex(&'s Convex<'static, T>, Pose<T>, T),
@@ -308,15 +333,14 @@ impl<'s, T: Float> Against<'s, T> {
     /// `x . n` is `upper` (weight `weight`, placement error `err`).
     pub(super) fn slab(&self, upper: T, weight: T, err: T, n: Vec3<T>) -> T {
         match *self {
-            Against::Convex(shape, pose, delta) => {
-                certified_gap_to(upper, weight, err, (shape, &pose, delta), n)
+            Against::Convex(shape, pose, e) => {
+                certified_gap_to_exact(upper, weight, err, (shape, &pose, e), n)
             }
-            Against::Plane(_, pose, delta) => {
+            Against::Plane(_, pose, e) => {
                 // The half-space's least point along the inward normal `n`
                 // is its plane's: the point at its origin (Lemma 12.3).
                 let lower = pose.translation.dot(n);
-                let reach = T::from_u32(8) * sum_up(weight, pose.translation.norm_l1());
-                gap_down(lower - upper, err, delta, reach)
+                gap_down(lower - upper, err, e, weight)
             }
         }
     }
@@ -330,7 +354,6 @@ pub(super) fn triangle_points_gap<T: Float>(
     err: T,
     points: &[[T; 3]],
     ball: &Convex<'static, T>,
-    delta: T,
 ) -> (T, T) {
     let mut gap = T::INFINITY;
     let mut estimate = T::INFINITY;
@@ -338,7 +361,8 @@ pub(super) fn triangle_points_gap<T: Float>(
         let p = Vec3::from_array(*p);
         let cp = point_triangle_vec(p, *tri);
         estimate = estimate.min_nan(cp.distance - ball.radius());
-        let against = Against::Convex(ball, Pose::from_translation(p), delta);
+        let at = Pose::from_translation(p);
+        let against = Against::Convex(ball, at, support_error_up(ball, &at));
         let g = match (p - cp.on_b).try_normalize() {
             Some(n) => {
                 let upper = tri.iter().map(|q| q.dot(n)).fold(-T::INFINITY, T::max_nan);

@@ -400,6 +400,28 @@ impl<'a, T: Float> Convex<'a, T> {
         }
     }
 
+    /// The core support value's own rounding: `k` such that the computed
+    /// [`core_support_value`](Self::core_support_value) at a computed `d`
+    /// is within `gamma_k W |d|_inf` of the exact one at that `d` (`W` the
+    /// [`weight`](Self::weight)): 0 for a point, 1 for a segment (one
+    /// product), 3 for a cuboid (three products summed) or a hull (three-term
+    /// dot products), 4 for a cylinder and 5 for a cone (a square root of a
+    /// sum of squares beside a product); `None` for a core placed in the
+    /// body frame (a compound's part), whose placement adds its own
+    /// (`proofs/12-shapes.md`, section "Support at an exact pose").
+    pub(crate) const fn support_rounding(&self) -> Option<u32> {
+        if self.placed.is_some() {
+            return None;
+        }
+        Some(match self.core {
+            Core::Point => 0,
+            Core::Segment { .. } => 1,
+            Core::Cuboid { .. } | Core::Polytope(_) => 3,
+            Core::Cylinder { .. } => 4,
+            Core::Cone { .. } => 5,
+        })
+    }
+
     pub(crate) const fn core(&self) -> &Core<'a, T> {
         &self.core
     }
