@@ -4,7 +4,7 @@ use crate::ca::step::{placement_error, precision_limit};
 use crate::ca::{CaParams, CaStep, StepResult, Witness};
 use crate::geometry::closest::segment_segment_vec;
 use crate::geometry::gjk::{gjk_closest, GjkParams, SupportMap};
-use crate::rounding::{gamma, gap_down, step_down, sum_up};
+use crate::rounding::{gap_down, step_down, sum_up};
 use crate::shape::convex::Core;
 use crate::{BoundingBall, Convex, Direction, Float, Point3, Pose, PreparedMotion, Vec3};
 
@@ -137,6 +137,7 @@ fn lower_support<T: Float>(b: &Convex<'_, T>, pb: &Pose<T>, n: Vec3<T>) -> T {
 /// (`proofs/12-shapes.md`, section "Support at an exact pose"). A core
 /// placed in the body frame (a compound's part) takes the rigid bound,
 /// `80 u max(c, 1) W'`. Computed once per obstacle.
+#[cfg(feature = "alloc")]
 pub(crate) fn support_error_up<T: Float>(b: &Convex<'_, T>, pb: &Pose<T>) -> T {
     let u = T::UNIT_ROUNDOFF;
     let x = sum_up(pb.translation.norm_l1(), T::ZERO);
@@ -158,7 +159,7 @@ pub(crate) fn support_error_up<T: Float>(b: &Convex<'_, T>, pb: &Pose<T>) -> T {
         None => T::from_u32(80) * (x + c.max_nan(T::ONE) * w + rho),
     };
     let under = T::from_u32(16) * T::ETA_NORMAL * (T::ONE + cw) + T::TWO * cw * T::SQRT_ETA_UP;
-    let e = body * u * (T::ONE + gamma::<T>(8)) + under;
+    let e = body * u * (T::ONE + crate::rounding::gamma::<T>(8)) + under;
     if e.is_nan() {
         T::INFINITY
     } else {
@@ -174,6 +175,7 @@ pub(crate) fn support_error_up<T: Float>(b: &Convex<'_, T>, pb: &Pose<T>) -> T {
 /// from a link's ball, box or triangle to a still shape obstacle
 /// (`proofs/13-chains.md`, Lemmas 13.6 and 13.14). `<= 0` when not
 /// separated along `n`.
+#[cfg(feature = "alloc")]
 pub(crate) fn certified_gap_to_exact<T: Float>(
     upper_a: T,
     weight_a: T,
@@ -640,7 +642,7 @@ pub(crate) mod tests {
     }
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "alloc"))]
 mod exact_pose_tests {
     //! [`support_error_up`] against the exact least `x . n` of a shape at an
     //! exact pose (`proofs/12-shapes.md`, section "Support at an exact

@@ -409,6 +409,7 @@ impl<'a, T: Float> Convex<'a, T> {
     /// sum of squares beside a product); `None` for a core placed in the
     /// body frame (a compound's part), whose placement adds its own
     /// (`proofs/12-shapes.md`, section "Support at an exact pose").
+    #[cfg(feature = "alloc")]
     pub(crate) const fn support_rounding(&self) -> Option<u32> {
         if self.placed.is_some() {
             return None;
