@@ -711,7 +711,7 @@ mod exact_pose_tests {
             _ => Convex::try_cone(r(), r()),
         }
         .expect("valid");
-        if i % 10 >= 5 && i % 5 != 0 {
+        if i % 10 >= 5 && !i.is_multiple_of(5) {
             s.try_rounded(T::from_f64(0.05)).expect("valid")
         } else {
             s
