@@ -737,25 +737,9 @@ mod exact_pose_tests {
     /// `1e3`; and a direction normalised in `T`.
     fn pose_and_direction<T: Float>(rng: &mut SplitMix64) -> (Pose<T>, Vec3<T>) {
         let q = [0; 4].map(|_| rng.signed_unit());
-        let l = q.iter().map(|a| a * a).sum::<f64>().sqrt();
-        let [w, a, b, c] = q.map(|v| v / l);
-        let m = [
-            [
-                1.0 - 2.0 * (b * b + c * c),
-                2.0 * (a * b - w * c),
-                2.0 * (a * c + w * b),
-            ],
-            [
-                2.0 * (a * b + w * c),
-                1.0 - 2.0 * (a * a + c * c),
-                2.0 * (b * c - w * a),
-            ],
-            [
-                2.0 * (a * c - w * b),
-                2.0 * (b * c + w * a),
-                1.0 - 2.0 * (a * a + b * b),
-            ],
-        ];
+        let m = crate::Rotation::try_from_quaternion(q[0], q[1], q[2], q[3])
+            .expect("a nonzero quaternion")
+            .matrix();
         let scale = 10f64.powf(rng.range(-3.0, 3.0));
         let x = rng.vec3().map(|v| T::from_f64(v * scale));
         let pose = Pose {
